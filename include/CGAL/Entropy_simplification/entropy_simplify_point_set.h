@@ -1,0 +1,284 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Progressive simplification of a point set by the local entropy of normal
+// angles.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_ENTROPY_SIMPLIFY_POINT_SET_H
+#define CGAL_ENTROPY_SIMPLIFICATION_ENTROPY_SIMPLIFY_POINT_SET_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
+#include <CGAL/Entropy_simplification/internal/named_parameters.h>
+#include <CGAL/Entropy_simplification/internal/order_by_removal.h>
+#include <CGAL/Entropy_simplification/internal/reference_plane.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+// ----------------------------------------------------------------------------
+// Private section
+// ----------------------------------------------------------------------------
+/// \cond SKIP_IN_MANUAL
+namespace Entropy_simplification {
+namespace internal {
+
+inline void check_simplification_arguments(std::size_t n, unsigned int k, std::size_t target,
+                                           const Options& options)
+{
+  if (k < minimum_k(options.normal_estimation) || k > Decremental_knn::largest_k)
+    throw std::invalid_argument("k = " + std::to_string(k) + " is out of range: the normal estimation needs k in [" +
+                                std::to_string(minimum_k(options.normal_estimation)) + ", " +
+                                std::to_string(Decremental_knn::largest_k) + "]");
+  if (n < std::size_t(k) + 1)
+    throw std::invalid_argument("k = " + std::to_string(k) + " needs at least k + 1 points; the range has " +
+                                std::to_string(n));
+  if (target < std::size_t(k) + 1)
+    throw std::invalid_argument("the simplified set must keep at least k + 1 = " + std::to_string(k + 1) +
+                                " points so that every point keeps k neighbours; " + std::to_string(target) +
+                                " were asked");
+}
+
+// Runs the progressive removal on points given in input order, down to
+// `target` points, and returns the input positions of the removed points in
+// removal order. `write_normal(position, normal)` receives the final normal of
+// each remaining point, unless the callback interrupted the initialisation.
+template <typename ConcurrencyTag, typename NormalWriter>
+std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, std::size_t target,
+                            const Options& options, const std::function<bool(double)>& callback,
+                            const NormalWriter& write_normal)
+{
+  const std::size_t n = points.size();
+  const Working_vector reference = reference_normal(options, points);
+  const Indexed_points indexed = sort_spatially(points);
+  points = std::vector<Working_point>();
+
+  // Progress: the initialisation counts for the first quarter.
+  auto report = [&callback](double fraction) { return !callback || callback(fraction); };
+  Paper_simplification engine(indexed, k, options, reference);
+  std::vector<Index> removed;
+  if (!engine.template initialize<ConcurrencyTag>([&](double f) { return report(0.25 * f); }))
+    return removed;
+
+  const std::size_t removals = n - target;
+  const std::size_t period = (std::max)(std::size_t(1), removals / 1000);
+  removed.reserve(removals);
+  while (removed.size() < removals)
+  {
+    removed.push_back(indexed.input_position[engine.remove_next()]);
+    if (removed.size() % period == 0 &&
+        !report(0.25 + 0.75 * double(removed.size()) / double(removals)))
+      break;
+  }
+
+  for (Index i = 0; i < Index(n); ++i)
+    if (engine.is_present(i))
+      write_normal(indexed.input_position[i], engine.normal(i));
+  return removed;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+/// \endcond
+
+// ----------------------------------------------------------------------------
+// Public section
+// ----------------------------------------------------------------------------
+
+/**
+   \ingroup PkgEntropySimplificationRef
+
+   Simplifies a point set progressively by the local entropy of normal angles,
+   the method of "A New Progressive Simplification Method for Point Cloud
+   Using Local Entropy of Normal Angle" (J. Indian Soc. Remote Sens. 46(4),
+   2018), down to exactly the requested number of points.
+
+   This function modifies the order of the input points so as to pack all
+   kept points first, in their input order, and returns an iterator over the
+   first point to remove (see erase-remove idiom). The removed points follow
+   in reverse order of removal, the last removed first: for any `m` between
+   the number of kept points and the size of the range, the first `m` points
+   are what the method keeps when asked for `m` points, so one run serves
+   every larger target. Points are only moved: coordinates and other
+   attributes are never altered.
+
+   <b>The method.</b> With `N(p)` the `k` nearest neighbours of `p` among the
+   points still present (`p` excluded, ties broken by input position):
+   - the normal of `p` is estimated on `p` and `N(p)`, `k + 1` points, as
+     `CGAL::pca_estimate_normals()` does (Eq. 1-2; `Options::normal_estimation`
+     selects jet fitting instead); points that all coincide have no normal;
+   - a reference plane is fitted to the whole input once (Eq. 3; or given in
+     `Options::reference_normal`);
+   - the normal angle `theta_p` of `p` is the angle between its normal and the
+     reference plane, in `[0, pi/2]` (Eq. 4); it is 0 for a point without
+     normal;
+   - the importance of `p` is the entropy, in nats, of the angles of `p` and
+     `N(p)` normalised by their sum (Eq. 5), with `0 log 0 = 0` and an
+     importance of 0 when all these angles are 0;
+   - the point of least importance in the order of `Options::removal_order`
+     (ties broken by input position) is removed, and the neighbourhoods,
+     normals and importances it changed are updated, until the target count
+     is reached.
+   After every removal, every remaining point's neighbourhood, normal and
+   importance are exactly what a computation from scratch on the remaining
+   points would give. The paper only says to update the normals of the
+   removed point's "first ring" and the importances of its "second ring";
+   this contract is stricter and testable. The user manual documents each of
+   these choices and what they measure.
+
+   \tparam ConcurrencyTag enables sequential versus parallel initial
+   estimation. Possible values are `Sequential_tag`, `Parallel_tag`, and
+   `Parallel_if_available_tag`. The removals are sequential; the result does
+   not depend on the tag.
+   \tparam PointRange is a model of `Range`. The value type of its iterator is
+   the key type of the named parameter `point_map`; its elements must be
+   move-assignable.
+
+   \param points input point range
+   \param k number of neighbours of each point, for its normal and its
+   importance
+   \param np a sequence of \ref bgl_namedparameters "Named Parameters" among
+   the ones listed below. Exactly one of `number_of_output_points` and
+   `select_percentage` must be given. Any other named parameter is rejected at
+   compile time rather than silently ignored.
+   \param options the package's options (`Entropy_simplification::Options`)
+
+   \cgalNamedParamsBegin
+     \cgalParamNBegin{number_of_output_points}
+       \cgalParamDescription{the number of points to keep; a number above the
+       size of the range keeps every point}
+       \cgalParamType{an integral type}
+       \cgalParamDefault{none: give this or `select_percentage`}
+       \cgalParamExtra{Must be at least `k + 1`.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{select_percentage}
+       \cgalParamDescription{the percentage of the points to keep, in `(0, 100]`.
+       The number kept is `ceil(n * select_percentage / 100)` for `n` points,
+       where a product within a relative `1e-9` of an integer counts as that
+       integer: 10% of 182,191 points is 18,220 points, as in the paper, and 7%
+       of 100 points is 7 points.}
+       \cgalParamType{double}
+       \cgalParamDefault{none: give this or `number_of_output_points`}
+       \cgalParamExtra{The resulting number must be at least `k + 1`.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{point_map}
+       \cgalParamDescription{a property map associating points to the elements of the point set `points`}
+       \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+       \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`, or the point
+                         map of a `CGAL::Point_set_3`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{normal_map}
+       \cgalParamDescription{a property map that receives the final unit normal of every
+       kept point, estimated on its neighbours among the kept points (the null
+       vector where it is undefined). Nothing else is written: without this
+       parameter, the points' normals, such as those of a `CGAL::Point_set_3`,
+       are left untouched.}
+       \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `geom_traits::Vector_3`}
+       \cgalParamDefault{none: no normal is written}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{callback}
+       \cgalParamDescription{a mechanism to get feedback on the advancement of the algorithm
+                             while it is running and to interrupt it if needed}
+       \cgalParamType{an instance of `std::function<bool(double)>`.}
+       \cgalParamDefault{unused}
+       \cgalParamExtra{It is called on the calling thread with the fraction of the work
+                       done, in `[0, 1]`: the initial estimation counts for the first
+                       quarter, then the removals, about a thousand calls in all. When it
+                       returns `false`, the algorithm stops, and the range is partitioned
+                       as if the target had been the number of points then present
+                       (everything is kept when it stops during the initial estimation).}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{geom_traits}
+       \cgalParamDescription{an instance of a geometric traits class}
+       \cgalParamType{a model of `Kernel`}
+       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \return iterator over the first point to remove; `points.end()` for an
+   empty range, or when nothing is removed.
+
+   \throw std::invalid_argument (in every build type, before any point is
+   moved) when a coordinate is not finite; when `k` is below 2 (below 5 with
+   jet fitting) or above 1000; when the range has fewer than `k + 1` points;
+   when `select_percentage` is outside `(0, 100]` or `number_of_output_points`
+   is not positive; when fewer than `k + 1` points would be kept; when
+   `Options::reference_normal` is null or not finite.
+
+   Duplicated points are valid input: they are ordinary neighbours at distance
+   0. A planar cloud gives every point the same importance, so points are
+   removed in input order; a collinear cloud gives an arbitrary but
+   deterministic result.
+*/
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+typename PointRange::iterator
+entropy_simplify_point_set(PointRange& points, unsigned int k,
+                           const NamedParameters& np = parameters::default_values(),
+                           const Entropy_simplification::Options& options = Entropy_simplification::Options())
+{
+  namespace ES = Entropy_simplification::internal;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  static_assert(ES::Uses_only_named_parameters<NamedParameters, internal_np::point_t, internal_np::normal_t,
+                                               internal_np::callback_t, internal_np::geom_traits_t,
+                                               internal_np::number_of_output_points_t,
+                                               internal_np::select_percentage_t>::value,
+                "entropy_simplify_point_set() reads only the named parameters number_of_output_points, "
+                "select_percentage, point_map, normal_map, callback and geom_traits");
+
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Const_point_map PointMap;
+  typedef typename NP_helper::Geom_traits Kernel;
+  typedef typename Kernel::FT FT;
+  constexpr bool has_normal_map = !parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value;
+
+  const PointMap point_map = NP_helper::get_const_point_map(points, np);
+  const std::function<bool(double)>& callback =
+    choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
+
+  std::vector<ES::Working_point> input = ES::copy_finite_points(points.begin(), points.end(), point_map);
+  if (input.empty())
+    return points.end();
+  const std::size_t target = ES::requested_output_size(input.size(), np);
+  ES::check_simplification_arguments(input.size(), k, target, options);
+  if (target == input.size() && !has_normal_map)
+    return points.end();
+
+  const auto at = ES::iterators_of(points);
+  auto write_normal = [&](ES::Index position, const ES::Working_vector& n) {
+    if constexpr (has_normal_map)
+      put(get_parameter(np, internal_np::normal_map), *at[position],
+          typename Kernel::Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+  };
+  const std::vector<ES::Index> removed =
+    ES::simplify<ConcurrencyTag>(std::move(input), k, target, options, callback, write_normal);
+
+  const std::size_t kept = ES::order_by_removal(at, removed);
+  return kept == at.size() ? points.end() : at[kept];
+}
+
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_ENTROPY_SIMPLIFY_POINT_SET_H

@@ -1,0 +1,66 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A loop over indices, parallel with CGAL::Parallel_tag, that reports progress
+// on the calling thread.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
+
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <cstddef>
+#include <type_traits>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// Calls `f(i)` for every i in [0, n), block after block. After each block,
+// `progress(done)` runs on the calling thread, so a user callback is never
+// called concurrently; when it returns false the loop stops and this returns
+// false. Within a block the calls run in parallel with `CGAL::Parallel_tag`:
+// `f` must then only write to data owned by index i.
+template <typename ConcurrencyTag, typename Function, typename Progress>
+bool for_each_index(std::size_t n, const Function& f, const Progress& progress)
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "CGAL::Parallel_tag is enabled but TBB is unavailable");
+#endif
+  const std::size_t block = 1 << 15;
+  for (std::size_t first = 0; first < n; first += block)
+  {
+    const std::size_t beyond = (std::min)(n, first + block);
+#ifdef CGAL_LINKED_WITH_TBB
+    if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, beyond),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i)
+                            f(i);
+                        });
+    }
+    else
+#endif
+    {
+      for (std::size_t i = first; i != beyond; ++i)
+        f(i);
+    }
+    if (!progress(beyond))
+      return false;
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H

@@ -1,0 +1,78 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reorders a point range after a progressive removal.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
+
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// The iterators of a range, by position.
+template <typename Range>
+std::vector<typename Range::iterator> iterators_of(Range& range)
+{
+  std::vector<typename Range::iterator> result;
+  for (auto it = range.begin(); it != range.end(); ++it)
+    result.push_back(it);
+  return result;
+}
+
+// Moves the elements of a range, given by `at` (its iterators by position),
+// so that the kept elements come first in their input order, followed by the
+// removed ones, the last removed first. Then the first m elements, for any m
+// from the number kept to the size, are what remained when m points were
+// left. `removed` holds input positions in removal order. Only moves
+// elements: the range stays a permutation of itself. Returns the position of
+// the first removed element.
+template <typename Iterator>
+std::size_t order_by_removal(const std::vector<Iterator>& at, const std::vector<Index>& removed)
+{
+  const std::size_t n = at.size();
+  std::vector<char> is_removed(n, 0);
+  for (Index i : removed)
+    is_removed[i] = 1;
+
+  // source[j]: the input position of the element that goes to position j
+  std::vector<Index> source;
+  source.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!is_removed[i])
+      source.push_back(Index(i));
+  const std::size_t kept = source.size();
+  source.insert(source.end(), removed.rbegin(), removed.rend());
+
+  // Follow each cycle of the permutation once, moving through a single
+  // temporary.
+  std::vector<char> done(n, 0);
+  for (std::size_t start = 0; start < n; ++start)
+  {
+    if (done[start] || source[start] == start)
+      continue;
+    auto carried = std::move(*at[start]);
+    std::size_t j = start;
+    while (source[j] != start)
+    {
+      *at[j] = std::move(*at[source[j]]);
+      done[j] = 1;
+      j = source[j];
+    }
+    *at[j] = std::move(carried);
+    done[j] = 1;
+  }
+  return kept;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
