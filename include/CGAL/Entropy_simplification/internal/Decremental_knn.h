@@ -11,9 +11,7 @@
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <CGAL/assertions.h>
-#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
@@ -21,50 +19,46 @@
 #include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
-#include <cmath>
-#include <iterator>
 #include <cstdint>
-#include <limits>
 #include <stdexcept>
-#include <utility>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// The neighbour order of a point q: other present points sorted by squared
-// distance to q, ties broken by input position. Its first k entries are the
-// k nearest neighbours of q, which is what a from-scratch computation on the
-// present points gives.
+// The neighbour order of a point q: the other present points sorted by
+// squared distance to q, ties broken by input position. Its first k entries
+// are the k nearest neighbours of q, which is what a from-scratch computation
+// on the present points gives.
 //
-// Each point keeps a candidate list: an exact prefix of its neighbour order,
-// of up to `capacity` points. Removing a point keeps every candidate list a
-// prefix, so a list needs the Kd tree again only when fewer than k candidates
-// are left. Reverse lists record, for each point s, the points q that have s
-// among their k nearest neighbours: removing s changes exactly their
-// neighbourhoods.
+// Each point keeps a candidate list: an exact prefix of its neighbour order
+// when it was filled, of up to `capacity` points. Removing a point keeps
+// every candidate list a prefix once the removed points are skipped, so a
+// list needs the Kd tree again only when fewer than k candidates are left.
+// Reverse lists record, for each point s, the points that have s among their
+// k nearest neighbours: removing s changes exactly their neighbourhoods.
 //
 // Requires at least k + 1 present points at all times.
 class Decremental_knn
 {
   using Point_map = CGAL::Pointer_property_map<Working_point>::const_type;
-  using Base_traits = CGAL::Search_traits_3<Working_kernel>;
-  using Traits = CGAL::Search_traits_adapter<Index, Point_map, Base_traits>;
-  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
-  using Distance = Search::Distance;
-  using Tree = Search::Tree;
-  using Sphere = CGAL::Fuzzy_sphere<Traits>;
+  using Traits = CGAL::Search_traits_adapter<Index, Point_map, CGAL::Search_traits_3<Working_kernel> >;
+  using Tree = CGAL::Kd_tree<Traits>;
   using Count = std::uint16_t;
 
-  static constexpr Index none = (std::numeric_limits<Index>::max)();
-
-  // A node of a reverse list; nodes live in one pool with a free list, so
-  // removals allocate nothing once the pool has reached its working size.
-  struct Reverse_node
+  // A neighbour in the making, ordered by (distance, input position).
+  struct Neighbor
   {
-    Index point;
-    Index next;
+    double squared_distance;
+    Index input_position;
+    Index id;
+    bool operator<(const Neighbor& other) const
+    {
+      return squared_distance < other.squared_distance ||
+             (squared_distance == other.squared_distance && input_position < other.input_position);
+    }
   };
 
 public:
@@ -73,14 +67,15 @@ public:
   Decremental_knn(const Indexed_points& points, unsigned int k)
     : m_points(points),
       m_k(k),
-      m_capacity(k + (std::max)(4u, k / 2)),
-      m_point_map(CGAL::make_property_map(points.points)),
+      m_capacity(2 * k),
+      m_block(k + k / 2 + 2),
       m_tree(boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
-             Tree::Splitter(), Traits(m_point_map)),
+             Tree::Splitter(), Traits(CGAL::make_property_map(points.points))),
       m_candidates(points.size() * m_capacity),
       m_count(points.size(), 0),
       m_present(points.size(), 1),
-      m_reverse_head(points.size(), none)
+      m_reverse(points.size() * m_block),
+      m_reverse_count(points.size(), 0)
   {
     if (k == 0 || k > largest_k)
       throw std::invalid_argument("k must lie in [1, 1000]");
@@ -89,7 +84,6 @@ public:
     m_tree.build();
   }
 
-  std::size_t k() const { return m_k; }
   bool is_present(Index i) const { return m_present[i] != 0; }
 
   // The k nearest present neighbours of `i`, nearest first.
@@ -101,15 +95,12 @@ public:
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    const bool completed = for_each_index<ConcurrencyTag>(
-      m_points.size(), [&](std::size_t i) { fill_candidates(Index(i)); }, progress);
-    if (!completed)
+    if (!for_each_index<ConcurrencyTag>(m_points.size(), [&](std::size_t i) { fill_candidates(Index(i)); },
+                                        progress))
       return false;
-
-    m_nodes.reserve(m_points.size() * m_k);
     for (Index q = 0; q < Index(m_points.size()); ++q)
       for (unsigned int j = 0; j < m_k; ++j)
-        push_reverse(neighbors(q)[j], q);
+        add_reverse(neighbors(q)[j], q);
     return true;
   }
 
@@ -117,121 +108,116 @@ public:
   // among their k nearest neighbours; each of them now has a new k-th one.
   void remove(Index p, std::vector<Index>& changed)
   {
-    changed.clear();
     m_present[p] = 0;
     m_tree.remove(p, [p](Index i) { return i == p; });
+    for (unsigned int j = 0; j < m_k; ++j)
+      erase_reverse(neighbors(p)[j], p);
 
-    Index node = m_reverse_head[p];
-    m_reverse_head[p] = none;
-    while (node != none)
+    changed.clear();
+    for_each_reverse_neighbor(p, [&](Index q) { changed.push_back(q); });
+    clear_reverse(p);
+    for (Index q : changed)
     {
-      const Index q = m_nodes[node].point;
-      const Index next = m_nodes[node].next;
-      release_node(node);
-      node = next;
-      if (!is_present(q))
-        continue;
       erase_candidate(q, p);
       if (m_count[q] < m_k)
         fill_candidates(q);
-      push_reverse(neighbors(q)[m_k - 1], q);
-      changed.push_back(q);
+      add_reverse(neighbors(q)[m_k - 1], q);
     }
   }
 
   // Calls `f(r)` for each present point r that has `q` among its k nearest
-  // neighbours. Drops, on the way, the entries of points removed since.
+  // neighbours.
   template <typename Function>
-  void for_each_reverse_neighbor(Index q, const Function& f)
+  void for_each_reverse_neighbor(Index q, const Function& f) const
   {
-    Index* link = &m_reverse_head[q];
-    while (*link != none)
-    {
-      const Index node = *link;
-      const Index r = m_nodes[node].point;
-      if (is_present(r))
-      {
+    const Index* block = &m_reverse[std::size_t(q) * m_block];
+    const std::size_t count = m_reverse_count[q];
+    for (std::size_t j = 0; j < (std::min)(count, m_block); ++j)
+      f(block[j]);
+    if (count > m_block)
+      for (Index r : m_overflow.at(q))
         f(r);
-        link = &m_nodes[node].next;
-      }
-      else
-      {
-        *link = m_nodes[node].next;
-        release_node(node);
-      }
-    }
   }
 
 private:
-  bool precedes(const std::pair<double, Index>& a, const std::pair<double, Index>& b) const
-  {
-    if (a.first != b.first)
-      return a.first < b.first;
-    return m_points.input_position[a.second] < m_points.input_position[b.second];
-  }
-
   // Sets the candidate list of `q` to the first `capacity` entries of its
-  // neighbour order (or all of them when fewer points are present).
+  // neighbour order (or all of them when fewer points are present), by a
+  // depth-first search of the Kd tree that orders ties exactly.
   void fill_candidates(Index q)
   {
-    thread_local std::vector<std::pair<double, Index> > found;
+    thread_local std::vector<Neighbor> best;
+    best.clear();
     const Working_point& center = m_points.points[q];
-    const std::size_t wanted = m_capacity + 1; // q itself comes back too
-
-    found.clear();
-    std::size_t returned = 0;
-    Search search(m_tree, center, unsigned(wanted), 0., true, Distance(m_point_map));
-    for (auto it = search.begin(); it != search.end(); ++it, ++returned)
-      if (it->first != q)
-        found.emplace_back(squared_distance(center, m_points.points[it->first]), it->first);
-    std::size_t prefix = found.size();
-    std::sort(found.begin(), found.end(),
-              [this](const auto& a, const auto& b) { return precedes(a, b); });
-
-    if (returned == wanted)
+    double offsets[3] = { 0., 0., 0. };
+    const auto& box = m_tree.bounding_box();
+    double root_distance = 0.;
+    for (int d = 0; d < 3; ++d)
     {
-      // Unreturned points lie at least as far as the farthest returned one;
-      // entries tied with it (up to the tree's rounding) may be out of order.
-      const double farthest = found.back().first;
-      prefix = std::size_t(std::lower_bound(found.begin(), found.end(), farthest * (1. - 1e-12),
-                                            [](const auto& e, double d) { return e.first < d; }) -
-                           found.begin());
-      if (prefix < m_k)
-        prefix = collect_ties(q, farthest, found);
+      const double c = center.cartesian(d);
+      offsets[d] = c < box.min_coord(d) ? box.min_coord(d) - c : (c > box.max_coord(d) ? c - box.max_coord(d) : 0.);
+      root_distance += offsets[d] * offsets[d];
     }
+    search(m_tree.root(), root_distance, offsets, q, best);
 
-    const std::size_t count = (std::min)(prefix, std::size_t(m_capacity));
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
-    for (std::size_t j = 0; j < count; ++j)
-      list[j] = found[j].second;
-    m_count[q] = Count(count);
+    for (std::size_t j = 0; j < best.size(); ++j)
+      list[j] = best[j].id;
+    m_count[q] = Count(best.size());
   }
 
-  // Heavy ties (e.g. duplicated points): replaces `found` by every present
-  // point within `farthest` of `q`, in neighbour order, and returns its size.
-  std::size_t collect_ties(Index q, double farthest, std::vector<std::pair<double, Index> >& found) const
+  // The search of CGAL::Orthogonal_k_neighbor_search (closer child first,
+  // `distance` the squared distance from the query to the node's box), keeping
+  // the `capacity` first points in neighbour order. A subtree is skipped only
+  // when it is farther than the worst point kept, with a margin for the
+  // rounding of `distance`, so ties at that distance are still considered.
+  void search(Tree::Node_const_handle node, double distance, double offsets[3], Index q,
+              std::vector<Neighbor>& best) const
   {
-    thread_local std::vector<Index> inside;
     const Working_point& center = m_points.points[q];
-    inside.clear();
-    m_tree.search(std::back_inserter(inside),
-                  Sphere(center, std::sqrt(farthest) * (1. + 1e-9), 0., Traits(m_point_map)));
-    found.clear();
-    for (Index i : inside)
+    if (node->is_leaf())
     {
-      const double d = squared_distance(center, m_points.points[i]);
-      if (i != q && d <= farthest)
-        found.emplace_back(d, i);
+      const auto leaf = static_cast<Tree::Leaf_node_const_handle>(node);
+      for (auto it = leaf->begin(); it != leaf->end(); ++it)
+        if (*it != q)
+          keep_if_better(Neighbor{ squared_distance(center, m_points.points[*it]),
+                                   m_points.input_position[*it], *it },
+                         best);
+      return;
     }
-    std::sort(found.begin(), found.end(),
-              [this](const auto& a, const auto& b) { return precedes(a, b); });
-    return found.size();
+    const auto inner = static_cast<Tree::Internal_node_const_handle>(node);
+    const int d = inner->cutting_dimension();
+    const double c = center.cartesian(d);
+    const double to_upper = c - inner->upper_low_value();
+    const double to_lower = c - inner->lower_high_value();
+    const bool lower_first = to_upper + to_lower < 0.;
+    search(lower_first ? inner->lower() : inner->upper(), distance, offsets, q, best);
+
+    const double offset = lower_first ? to_upper : to_lower;
+    const double old_offset = offsets[d];
+    const double other_distance = distance + offset * offset - old_offset * old_offset;
+    if (best.size() < m_capacity || other_distance * (1. - 1e-12) <= best.back().squared_distance)
+    {
+      offsets[d] = offset;
+      search(lower_first ? inner->upper() : inner->lower(), other_distance, offsets, q, best);
+      offsets[d] = old_offset;
+    }
+  }
+
+  void keep_if_better(const Neighbor& candidate, std::vector<Neighbor>& best) const
+  {
+    if (best.size() == m_capacity)
+    {
+      if (!(candidate < best.back()))
+        return;
+      best.pop_back();
+    }
+    best.insert(std::upper_bound(best.begin(), best.end(), candidate), candidate);
   }
 
   // Erases `p`, one of the k nearest neighbours of `q`, from the candidates of
   // `q`, with the spare candidates (beyond the k-th) removed since the list
-  // was filled: the first k entries are then present again. The rest is
-  // still a prefix of the neighbour order of `q` among the present points.
+  // was filled: the first k entries are then present again, and the list is
+  // a prefix of the neighbour order of `q` among the present points.
   void erase_candidate(Index q, Index p)
   {
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
@@ -243,40 +229,53 @@ private:
     m_count[q] = Count(end - list);
   }
 
-  void push_reverse(Index s, Index q)
+  // Reverse lists: the first `m_block` entries of a point inline, the rare
+  // others in an overflow vector.
+  void add_reverse(Index s, Index q)
   {
-    Index node;
-    if (m_free != none)
-    {
-      node = m_free;
-      m_free = m_nodes[node].next;
-    }
+    const std::size_t count = m_reverse_count[s]++;
+    if (count < m_block)
+      m_reverse[std::size_t(s) * m_block + count] = q;
     else
-    {
-      node = Index(m_nodes.size());
-      m_nodes.emplace_back();
-    }
-    m_nodes[node] = Reverse_node{ q, m_reverse_head[s] };
-    m_reverse_head[s] = node;
+      m_overflow[s].push_back(q);
   }
 
-  void release_node(Index node)
+  // Replaces `q` by the last entry.
+  void erase_reverse(Index s, Index q)
   {
-    m_nodes[node].next = m_free;
-    m_free = node;
+    Index* block = &m_reverse[std::size_t(s) * m_block];
+    const std::size_t count = m_reverse_count[s]--;
+    Index* last = count > m_block ? &m_overflow[s].back() : block + count - 1;
+    Index* position = std::find(block, block + (std::min)(count, m_block), q);
+    if (position == block + (std::min)(count, m_block))
+      position = &*std::find(m_overflow[s].begin(), m_overflow[s].end(), q);
+    *position = *last;
+    if (count > m_block)
+    {
+      m_overflow[s].pop_back();
+      if (m_overflow[s].empty())
+        m_overflow.erase(s);
+    }
+  }
+
+  void clear_reverse(Index s)
+  {
+    if (m_reverse_count[s] > m_block)
+      m_overflow.erase(s);
+    m_reverse_count[s] = 0;
   }
 
   const Indexed_points& m_points;
   const unsigned int m_k;
-  const unsigned int m_capacity;
-  Point_map m_point_map;
+  const std::size_t m_capacity;
+  const std::size_t m_block;
   Tree m_tree;
   std::vector<Index> m_candidates; // m_capacity entries per point
   std::vector<Count> m_count;
   std::vector<char> m_present;
-  std::vector<Index> m_reverse_head;
-  std::vector<Reverse_node> m_nodes;
-  Index m_free = none;
+  std::vector<Index> m_reverse; // m_block entries per point
+  std::vector<Index> m_reverse_count;
+  std::unordered_map<Index, std::vector<Index> > m_overflow;
 };
 
 } // namespace internal

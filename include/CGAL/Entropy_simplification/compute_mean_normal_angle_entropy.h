@@ -1,0 +1,127 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The paper's accuracy indicator (Eq. 6-7): the mean entropy of normal angles.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_COMPUTE_MEAN_NORMAL_ANGLE_ENTROPY_H
+#define CGAL_ENTROPY_SIMPLIFICATION_COMPUTE_MEAN_NORMAL_ANGLE_ENTROPY_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
+#include <CGAL/Entropy_simplification/internal/named_parameters.h>
+#include <CGAL/Entropy_simplification/internal/reference_plane.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/**
+   \ingroup PkgEntropySimplificationRef
+
+   Computes the paper's accuracy indicator of a (simplified) point set: the
+   mean, over its points, of the entropy in bits of the normal angles of each
+   point and its `k` nearest neighbours (Eq. 6-7).
+
+   Everything is computed on the given points alone, exactly as
+   `CGAL::entropy_simplify_point_set()` computes the importance of a point
+   before any removal (same neighbourhoods, normals, angles and conventions),
+   converted from nats to bits. The paper does not say which reference plane
+   the angles of Eq. 6 use: by default the plane is fitted to the given points;
+   to compare several simplifications of one input, pass the normal of the
+   input's plane in `Options::reference_normal` (it is the normal of the plane
+   `CGAL::linear_least_squares_fitting_3()` fits to the input).
+
+   The paper reads a higher value as a better simplification. The indicator is
+   largest, `log2(k + 1)`, where the angles of a neighbourhood are equal, so
+   it rewards removing the points whose neighbourhoods have unequal angles,
+   which is what `Removal_order::lowest_entropy_first` does by construction;
+   the user manual shows what it measures.
+
+   \tparam ConcurrencyTag enables sequential versus parallel computation.
+   Possible values are `Sequential_tag`, `Parallel_tag`, and
+   `Parallel_if_available_tag`. The result does not depend on it.
+   \tparam PointRange is a model of `ConstRange`. The value type of its
+   iterator is the key type of the named parameter `point_map`.
+
+   \param points input point range
+   \param k number of neighbours of each point
+   \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among
+   the ones listed below; any other is rejected at compile time
+   \param options the package's options; this function reads
+   `normal_estimation` and `reference_normal`
+
+   \cgalNamedParamsBegin
+     \cgalParamNBegin{point_map}
+       \cgalParamDescription{a property map associating points to the elements of the point set `points`}
+       \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+       \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`, or the point
+                         map of a `CGAL::Point_set_3`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{geom_traits}
+       \cgalParamDescription{an instance of a geometric traits class}
+       \cgalParamType{a model of `Kernel`}
+       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \return the mean entropy in bits, in `[0, log2(k + 1)]` up to rounding
+
+   \throw std::invalid_argument when a coordinate is not finite, when `k` is
+   out of range (as for `CGAL::entropy_simplify_point_set()`), when the range
+   has fewer than `k + 1` points, or when `Options::reference_normal` is null
+   or not finite.
+*/
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int k,
+                                         const NamedParameters& np = parameters::default_values(),
+                                         const Entropy_simplification::Options& options =
+                                           Entropy_simplification::Options())
+{
+  namespace ES = Entropy_simplification::internal;
+  static_assert(ES::Uses_only_named_parameters<NamedParameters, internal_np::point_t,
+                                               internal_np::geom_traits_t>::value,
+                "compute_mean_normal_angle_entropy() reads only the named parameters point_map and geom_traits");
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  const typename NP_helper::Const_point_map point_map = NP_helper::get_const_point_map(points, np);
+
+  const std::vector<ES::Working_point> input = ES::copy_finite_points(points.begin(), points.end(), point_map);
+  if (k < ES::minimum_k(options.normal_estimation) || input.size() < std::size_t(k) + 1)
+    throw std::invalid_argument("compute_mean_normal_angle_entropy: k = " + std::to_string(k) +
+                                " is too small for the normal estimation or too large for " +
+                                std::to_string(input.size()) + " points");
+
+  const ES::Working_vector reference = ES::reference_normal(options, input);
+  const ES::Indexed_points indexed = ES::sort_spatially(input);
+  ES::Paper_simplification state(indexed, k, options, reference);
+  state.template initialize<ConcurrencyTag>([](double) { return true; });
+
+  // Summed in input order, so that the result does not depend on the
+  // package's internal order.
+  std::vector<double> importance(indexed.size());
+  for (ES::Index i = 0; i < ES::Index(indexed.size()); ++i)
+    importance[indexed.input_position[i]] = state.importance(i);
+  double sum = 0.;
+  for (double h : importance)
+    sum += h;
+  return sum / double(importance.size()) / std::log(2.);
+}
+
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_COMPUTE_MEAN_NORMAL_ANGLE_ENTROPY_H

@@ -1,0 +1,446 @@
+// Tests of the paper's method: the numeric routines against hand-computed
+// values, the progressive removal against a brute-force reference, and the
+// guarantees of entropy_simplify_point_set (count, subset, permutation,
+// progressive prefixes, callback, determinism, bad input).
+
+#include <catch2/catch.hpp>
+
+#include "brute_force_reference.h"
+#include "test_clouds.h"
+
+#include <CGAL/Entropy_simplification/compute_mean_normal_angle_entropy.h>
+#include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/pca_estimate_normals.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace ES = CGAL::Entropy_simplification;
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Indexed = std::pair<Point, std::size_t>;
+using Point_of = CGAL::First_of_pair_property_map<Indexed>;
+using ES::internal::Angle_term;
+
+namespace {
+
+std::vector<Indexed> with_positions(const std::vector<Point>& points)
+{
+  std::vector<Indexed> result;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    result.emplace_back(points[i], i);
+  return result;
+}
+
+struct Run
+{
+  std::vector<Indexed> range;    // the range after the call
+  std::size_t kept = 0;          // position of the returned iterator
+  std::vector<std::size_t> removal_order; // input positions, first removed first
+};
+
+template <typename Tag = CGAL::Sequential_tag, typename NP>
+Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = {})
+{
+  Run run;
+  run.range = with_positions(points);
+  const auto it = CGAL::entropy_simplify_point_set<Tag>(run.range, k, np.point_map(Point_of()), options);
+  run.kept = std::size_t(it - run.range.begin());
+  for (std::size_t j = run.range.size(); j-- > run.kept;)
+    run.removal_order.push_back(run.range[j].second);
+  return run;
+}
+
+std::set<std::size_t> kept_positions(const Run& run)
+{
+  std::set<std::size_t> kept;
+  for (std::size_t j = 0; j < run.kept; ++j)
+    kept.insert(run.range[j].second);
+  return kept;
+}
+
+bool is_permutation_of_input(const Run& run, const std::vector<Point>& points)
+{
+  std::vector<bool> seen(points.size(), false);
+  for (const Indexed& e : run.range)
+  {
+    if (e.second >= points.size() || seen[e.second] || e.first != points[e.second])
+      return false;
+    seen[e.second] = true;
+  }
+  return run.range.size() == points.size();
+}
+
+double entropy_of(const std::vector<double>& angles)
+{
+  return ES::internal::angle_entropy(angles.size(), [&](std::size_t i) {
+    return ES::internal::make_angle_term(angles[i]);
+  });
+}
+
+} // namespace
+
+TEST_CASE("Eq. 5: entropy of hand-computed angle sets", "[entropy]")
+{
+  const unsigned int k = 10;
+  SECTION("all angles equal give log(k + 1)")
+  {
+    for (double theta : { 1e-9, 0.3, 1.5707963267948966 })
+      CHECK(entropy_of(std::vector<double>(k + 1, theta)) == Approx(std::log(double(k + 1))).epsilon(1e-12));
+  }
+  SECTION("zero angles carry no probability: 0 log 0 = 0")
+  {
+    // two equal non-zero angles and nine zeros: H = log 2
+    std::vector<double> angles(k + 1, 0.);
+    angles[3] = angles[7] = 0.4;
+    CHECK(entropy_of(angles) == Approx(std::log(2.)).epsilon(1e-12));
+    // a single non-zero angle: H = 0
+    std::vector<double> single(k + 1, 0.);
+    single[0] = 1.;
+    CHECK(std::abs(entropy_of(single)) < 1e-15);
+  }
+  SECTION("all angles zero give 0")
+  {
+    CHECK(entropy_of(std::vector<double>(k + 1, 0.)) == 0.);
+  }
+  SECTION("unequal angles, computed by hand")
+  {
+    // P = (1/4, 3/4): H = -(1/4 log 1/4 + 3/4 log 3/4)
+    const double expected = -(0.25 * std::log(0.25) + 0.75 * std::log(0.75));
+    CHECK(entropy_of({ 0.2, 0.6 }) == Approx(expected).epsilon(1e-12));
+    // P = (1/6, 2/6, 3/6)
+    const double p[3] = { 1. / 6., 2. / 6., 3. / 6. };
+    CHECK(entropy_of({ 0.1, 0.2, 0.3 }) ==
+          Approx(-(p[0] * std::log(p[0]) + p[1] * std::log(p[1]) + p[2] * std::log(p[2]))).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("Eq. 4: the normal angle is the angle to the reference plane", "[entropy]")
+{
+  using ES::internal::normal_angle;
+  const ES::internal::Working_vector z(0., 0., 1.);
+  CHECK(normal_angle({ 0., 0., 3. }, z) == Approx(1.5707963267948966).epsilon(1e-15));
+  CHECK(normal_angle({ 0., 0., -1. }, z) == Approx(1.5707963267948966).epsilon(1e-15));
+  CHECK(normal_angle({ 2., 0., 0. }, z) == 0.);
+  CHECK(normal_angle({ 1., 0., 1. }, z) == Approx(0.7853981633974483).epsilon(1e-15));
+  CHECK(normal_angle({ 1., 1., std::sqrt(6.) }, z) == Approx(std::asin(std::sqrt(6.) / std::sqrt(8.))).epsilon(1e-14));
+  CHECK(normal_angle(CGAL::NULL_VECTOR, z) == 0.);
+}
+
+TEST_CASE("Normals agree with CGAL's pca_estimate_normals and jet_estimate_normals", "[normals]")
+{
+  // Nothing removed: the normal map receives the normals of the whole cloud.
+  const std::vector<Point> points = test_clouds::wavy_surface(2000, 0.002, 11).points;
+  for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
+  {
+    const unsigned int k = 12;
+    std::vector<std::pair<Point, Vector> > ours, cgal;
+    for (const Point& p : points)
+    {
+      ours.emplace_back(p, CGAL::NULL_VECTOR);
+      cgal.emplace_back(p, CGAL::NULL_VECTOR);
+    }
+    ES::Options options;
+    options.normal_estimation = method;
+    const auto pm = CGAL::First_of_pair_property_map<std::pair<Point, Vector> >();
+    const auto nm = CGAL::Second_of_pair_property_map<std::pair<Point, Vector> >();
+    const auto it = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+      ours, k, CGAL::parameters::number_of_output_points(points.size()).point_map(pm).normal_map(nm), options);
+    REQUIRE(it == ours.end());
+    if (method == ES::Normal_estimation::pca)
+      CGAL::pca_estimate_normals<CGAL::Sequential_tag>(cgal, k, CGAL::parameters::point_map(pm).normal_map(nm));
+    else
+      CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cgal, k, CGAL::parameters::point_map(pm).normal_map(nm));
+
+    double worst = 0.;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      REQUIRE(ours[i].first == cgal[i].first);
+      const Vector a = ours[i].second, b = cgal[i].second;
+      const double sine = std::sqrt(CGAL::cross_product(a, b).squared_length() /
+                                    (a.squared_length() * b.squared_length()));
+      worst = (std::max)(worst, sine);
+    }
+    INFO("normal estimation " << int(method));
+    CHECK(worst < 1e-7);
+  }
+}
+
+TEST_CASE("The removal sequence equals a brute-force recomputation after every removal", "[brute force]")
+{
+  const std::vector<test_clouds::Cloud> clouds = {
+    test_clouds::small_replica(160, 40, 0.002, 1), test_clouds::wavy_surface(200, 0.01, 2),
+    test_clouds::cube_volume(150, 3), test_clouds::bent_grid(14), test_clouds::with_duplicates(80, 4)
+  };
+  for (const test_clouds::Cloud& cloud : clouds)
+    for (ES::Removal_order order : { ES::Removal_order::lowest_entropy_first, ES::Removal_order::highest_entropy_first })
+      for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
+      {
+        ES::Options options;
+        options.removal_order = order;
+        options.normal_estimation = method;
+        const unsigned int k = 8;
+        const std::size_t target = cloud.points.size() / 5;
+        INFO(cloud.name << ", order " << int(order) << ", normals " << int(method));
+
+        const auto reference = brute_force::removal_sequence(cloud.points, k, target, options);
+        using Record = std::tuple<Point, std::size_t, Vector>;
+        std::vector<Record> range;
+        for (std::size_t i = 0; i < cloud.points.size(); ++i)
+          range.emplace_back(cloud.points[i], i, CGAL::NULL_VECTOR);
+        const auto it = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+          range, k,
+          CGAL::parameters::number_of_output_points(target)
+            .point_map(CGAL::Nth_of_tuple_property_map<0, Record>())
+            .normal_map(CGAL::Nth_of_tuple_property_map<2, Record>()),
+          options);
+
+        std::vector<std::size_t> removal_order;
+        for (auto e = range.rbegin(); e.base() != it; ++e)
+          removal_order.push_back(std::get<1>(*e));
+        CHECK(removal_order == reference.first);
+
+        bool same_normals = true;
+        for (auto e = range.begin(); e != it; ++e)
+          same_normals = same_normals && std::get<2>(*e) == reference.second.normals[std::get<1>(*e)];
+        CHECK(same_normals);
+      }
+}
+
+TEST_CASE("Exactly the requested number of points is kept, as a subset, nothing lost", "[guarantees]")
+{
+  const std::vector<Point> points = test_clouds::small_replica(1600, 400, 0.002, 5).points;
+  for (std::size_t target : { std::size_t(11), std::size_t(12), std::size_t(57), std::size_t(200),
+                              std::size_t(1000), std::size_t(1999), std::size_t(2000), std::size_t(5000) })
+  {
+    INFO("target " << target);
+    const Run run = simplify(points, 10, CGAL::parameters::number_of_output_points(target));
+    CHECK(run.kept == (std::min)(target, points.size()));
+    CHECK(is_permutation_of_input(run, points));
+  }
+  for (double percentage : { 0.55, 1., 7., 10., 33.3, 50., 99.99, 100. })
+  {
+    INFO("percentage " << percentage);
+    const Run run = simplify(points, 10, CGAL::parameters::select_percentage(percentage));
+    CHECK(run.kept == ES::internal::kept_count_from_percentage(points.size(), percentage));
+    CHECK(is_permutation_of_input(run, points));
+  }
+}
+
+TEST_CASE("The rounding of a percentage", "[guarantees]")
+{
+  using ES::internal::kept_count_from_percentage;
+  CHECK(kept_count_from_percentage(182191, 10.) == 18220); // the paper's Table 2
+  CHECK(kept_count_from_percentage(100, 7.) == 7);        // 100 * 7.0 / 100 is not exactly 7
+  CHECK(kept_count_from_percentage(1000, 0.07 * 100.) == 70);
+  CHECK(kept_count_from_percentage(3, 50.) == 2);
+  CHECK(kept_count_from_percentage(457124, 20.) == 91425);
+  CHECK_THROWS_AS(kept_count_from_percentage(10, 0.), std::invalid_argument);
+  CHECK_THROWS_AS(kept_count_from_percentage(10, 100.5), std::invalid_argument);
+  CHECK_THROWS_AS(kept_count_from_percentage(10, std::nan("")), std::invalid_argument);
+}
+
+TEST_CASE("The removed points come last removed first: every prefix is a simplification", "[guarantees]")
+{
+  const std::vector<Point> points = test_clouds::wavy_surface(1500, 0.005, 7).points;
+  const Run deep = simplify(points, 10, CGAL::parameters::number_of_output_points(40));
+  for (std::size_t m : { std::size_t(40), std::size_t(41), std::size_t(300), std::size_t(1499) })
+  {
+    const Run direct = simplify(points, 10, CGAL::parameters::number_of_output_points(m));
+    std::set<std::size_t> prefix;
+    for (std::size_t j = 0; j < m; ++j)
+      prefix.insert(deep.range[j].second);
+    INFO("m = " << m);
+    CHECK(prefix == kept_positions(direct));
+  }
+}
+
+TEST_CASE("A callback sees progress, and stopping leaves a valid partition", "[guarantees]")
+{
+  const std::vector<Point> points = test_clouds::small_replica(1600, 400, 0.002, 9).points;
+  SECTION("progress is monotone and ends at 1")
+  {
+    std::vector<double> seen;
+    const std::function<bool(double)> record = [&](double f) {
+      seen.push_back(f);
+      return true;
+    };
+    simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(record));
+    REQUIRE(!seen.empty());
+    CHECK(std::is_sorted(seen.begin(), seen.end()));
+    CHECK(seen.front() >= 0.);
+    CHECK(seen.back() == Approx(1.));
+  }
+  SECTION("stopping during the removals keeps what was present then")
+  {
+    const std::function<bool(double)> stop_at_half = [](double f) { return f < 0.6; };
+    const Run stopped =
+      simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_at_half));
+    CHECK(is_permutation_of_input(stopped, points));
+    CHECK(stopped.kept > 100);
+    CHECK(stopped.kept < points.size());
+    // What was kept is exactly what a run to that target keeps.
+    const Run direct = simplify(points, 10, CGAL::parameters::number_of_output_points(stopped.kept));
+    CHECK(kept_positions(stopped) == kept_positions(direct));
+  }
+  SECTION("stopping during the initial estimation keeps everything")
+  {
+    const std::function<bool(double)> stop_now = [](double) { return false; };
+    const Run stopped = simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_now));
+    CHECK(stopped.kept == points.size());
+    CHECK(is_permutation_of_input(stopped, points));
+  }
+}
+
+TEST_CASE("Results are deterministic, and the same sequentially and in parallel", "[guarantees]")
+{
+  const std::vector<Point> points = test_clouds::small_replica(40000, 9000, 0.002, 13).points;
+  const auto np = CGAL::parameters::select_percentage(10.);
+  const Run first = simplify<CGAL::Sequential_tag>(points, 10, np);
+  const Run again = simplify<CGAL::Sequential_tag>(points, 10, np);
+  const Run parallel = simplify<CGAL::Parallel_if_available_tag>(points, 10, np);
+  CHECK(first.range == again.range);
+  CHECK(first.range == parallel.range);
+}
+
+TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
+{
+  const std::vector<Point> points = test_clouds::wavy_surface(300, 0.01, 17).points;
+  const auto count = [](std::size_t n) { return CGAL::parameters::number_of_output_points(n); };
+
+  SECTION("an empty range returns end()")
+  {
+    std::vector<Point> empty;
+    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(empty, 10, count(5)) == empty.end());
+  }
+  SECTION("fewer than k + 1 points, or k out of range, is an error")
+  {
+    std::vector<Point> few(points.begin(), points.begin() + 10);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(few, 10, count(5)), std::invalid_argument);
+    std::vector<Point> copy = points;
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1, count(50)), std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1001, count(50)),
+                    std::invalid_argument);
+    ES::Options jet;
+    jet.normal_estimation = ES::Normal_estimation::jet;
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 4, count(50), jet),
+                    std::invalid_argument);
+    CHECK(copy == points);
+  }
+  SECTION("a target of 0, or below k + 1, is an error; a target above the size keeps everything")
+  {
+    std::vector<Point> copy = points;
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(0)), std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10)), std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+                      copy, 10, CGAL::parameters::number_of_output_points(-3)),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+                      copy, 10, CGAL::parameters::select_percentage(0.)),
+                    std::invalid_argument);
+    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(points.size())) == copy.end());
+    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10 * points.size())) == copy.end());
+    CHECK(copy == points);
+  }
+  SECTION("NaN or infinite coordinates are rejected before anything moves")
+  {
+    for (double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+    {
+      std::vector<Point> copy = points;
+      copy[42] = Point(0.5, bad, 0.);
+      const std::vector<Point> before = copy;
+      CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50)),
+                        Catch::Contains("point #42"));
+      // bitwise, since NaN != NaN
+      CHECK(std::memcmp(copy.data(), before.data(), copy.size() * sizeof(Point)) == 0);
+    }
+  }
+  SECTION("a null reference normal is an error")
+  {
+    std::vector<Point> copy = points;
+    ES::Options options;
+    options.reference_normal = std::array<double, 3>{ 0., 0., 0. };
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options),
+                    std::invalid_argument);
+  }
+  SECTION("duplicated points: identical to the brute force (see above), and all-equal points go in input order")
+  {
+    const std::vector<Point> same(40, Point(1., 2., 3.));
+    const Run run = simplify(same, 5, count(12));
+    CHECK(run.kept == 12);
+    // Undefined normals have the angle 0, every importance is 0: ties go by input position.
+    CHECK(kept_positions(run) == std::set<std::size_t>{ 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39 });
+  }
+  SECTION("a planar cloud: equal importances, removed in input order")
+  {
+    std::vector<Point> plane;
+    for (const Point& p : points)
+      plane.emplace_back(p.x(), p.y(), 0.);
+    const Run run = simplify(plane, 10, count(100));
+    std::set<std::size_t> last;
+    for (std::size_t i = plane.size() - 100; i < plane.size(); ++i)
+      last.insert(i);
+    CHECK(kept_positions(run) == last);
+  }
+  SECTION("a collinear cloud gives a deterministic, exact-count result")
+  {
+    std::vector<Point> line;
+    for (std::size_t i = 0; i < 200; ++i)
+      line.emplace_back(0.1 * double(i * 7 % 200), 0.2 * double(i * 7 % 200), -0.3 * double(i * 7 % 200));
+    const Run once = simplify(line, 10, count(30));
+    const Run twice = simplify(line, 10, count(30));
+    CHECK(once.kept == 30);
+    CHECK(once.range == twice.range);
+    CHECK(is_permutation_of_input(once, line));
+  }
+}
+
+TEST_CASE("The accuracy indicator (Eq. 6-7)", "[indicator]")
+{
+  const unsigned int k = 10;
+  const std::vector<Point> points = test_clouds::wavy_surface(1000, 0.005, 21).points;
+  SECTION("it is the mean of the brute-force importances, in bits")
+  {
+    const ES::Options options;
+    const auto state = brute_force::compute_state(points, std::vector<bool>(points.size(), true), k, options,
+                                                  ES::internal::reference_normal(options, points));
+    double sum = 0.;
+    for (double h : state.importance)
+      sum += h;
+    CHECK(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(points, k) ==
+          Approx(sum / double(points.size()) / std::log(2.)).epsilon(1e-12));
+  }
+  SECTION("a planar cloud reaches the maximum log2(k + 1)")
+  {
+    std::vector<Point> plane;
+    for (const Point& p : points)
+      plane.emplace_back(p.x(), p.y(), 0.);
+    CHECK(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(plane, k) ==
+          Approx(std::log2(double(k + 1))).epsilon(1e-12));
+  }
+  SECTION("the reference plane can be given")
+  {
+    ES::Options tilted;
+    tilted.reference_normal = std::array<double, 3>{ 1., 0., 1. };
+    const double fitted = CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(points, k);
+    const double given = CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(
+      points, k, CGAL::parameters::default_values(), tilted);
+    CHECK(fitted != given);
+    CHECK(given <= std::log2(double(k + 1)) + 1e-12);
+  }
+  SECTION("bad input")
+  {
+    const std::vector<Point> few(points.begin(), points.begin() + 5);
+    CHECK_THROWS_AS(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(few, k), std::invalid_argument);
+  }
+}
