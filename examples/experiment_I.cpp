@@ -3,9 +3,10 @@
 // removal order. Prints the sphere/plane split of the kept points (the paper's
 // Table 2), the time, and the paper's accuracy indicator (Eq. 7).
 //
-//   experiment_I [--noise SIGMA] [--write PREFIX]
+//   experiment_I [--noise SIGMA] [-k K] [--write PREFIX]
 //
-// SIGMA is the range noise in metres (default: both 0.002 and 0.0012). With
+// SIGMA is the range noise in metres (default: both 0.002 and 0.0012), K the
+// number of neighbours (default 10). With
 // --write, the replica and each result are written as PREFIX*.ply, with a
 // `label` property (0 board, 1 ball).
 
@@ -44,22 +45,24 @@ void write(const std::string& file, const std::vector<Labelled_point>& points)
 int main(int argc, char** argv)
 {
   std::vector<double> noises = { 0.002, 0.0012 };
+  unsigned int k = 10;
   std::string prefix;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--noise" && i + 1 < argc)
       noises = { std::atof(argv[++i]) };
+    else if (a == "-k" && i + 1 < argc)
+      k = unsigned(std::atoi(argv[++i]));
     else if (a == "--write" && i + 1 < argc)
       prefix = argv[++i];
     else
     {
-      std::cerr << "usage: experiment_I [--noise SIGMA] [--write PREFIX]\n";
+      std::cerr << "usage: experiment_I [--noise SIGMA] [-k K] [--write PREFIX]\n";
       return EXIT_FAILURE;
     }
   }
 
-  const unsigned int k = 10;
   std::cout << "Experiment I replica, simplified to 10% with k = " << k << "\n"
             << "paper (Table 2): 18,220 kept = 12,529 plane + 5,691 sphere (31.2% sphere)\n\n";
   for (double noise : noises)

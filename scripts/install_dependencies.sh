@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the package, its tests and its benchmarks need.
+# Run as root (or with sudo available).
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# libcgal-demo carries CGAL's sample scans and meshes; its recommended Qt
+# packages are not needed.
+$SUDO apt-get install -y -qq --no-install-recommends \
+  ca-certificates cmake make g++ \
+  libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev \
+  catch2 doxygen libcgal-demo >/dev/null
