@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -69,8 +70,6 @@ public:
       m_k(k),
       m_capacity(2 * k),
       m_block(k + k / 2 + 2),
-      m_tree(boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
-             Tree::Splitter(), Traits(CGAL::make_property_map(points.points))),
       m_candidates(points.size() * m_capacity),
       m_count(points.size(), 0),
       m_present(points.size(), 1),
@@ -81,7 +80,10 @@ public:
       throw std::invalid_argument("k must lie in [1, 1000]");
     if (points.size() < std::size_t(k) + 1)
       throw std::invalid_argument("k nearest neighbours need at least k + 1 points");
-    m_tree.build();
+    std::vector<Index> all(points.size());
+    for (std::size_t i = 0; i < all.size(); ++i)
+      all[i] = Index(i);
+    build_tree(all);
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }
@@ -109,7 +111,9 @@ public:
   void remove(Index p, std::vector<Index>& changed)
   {
     m_present[p] = 0;
-    m_tree.remove(p, [p](Index i) { return i == p; });
+    m_tree->remove(p, [p](Index i) { return i == p; });
+    if (2 * --m_present_count < m_tree_size)
+      rebuild_tree();
     for (unsigned int j = 0; j < m_k; ++j)
       erase_reverse(neighbors(p)[j], p);
 
@@ -140,6 +144,28 @@ public:
   }
 
 private:
+  // A deleted point leaves the boxes of the tree's nodes as they were, so a
+  // search in a tree whose points are mostly deleted visits many empty
+  // leaves. Rebuilding it each time half its points are gone costs at most
+  // twice the first build.
+  void build_tree(const std::vector<Index>& indices)
+  {
+    m_tree = std::make_unique<Tree>(indices.begin(), indices.end(), Tree::Splitter(),
+                                    Traits(CGAL::make_property_map(m_points.points)));
+    m_tree->build();
+    m_tree_size = m_present_count = indices.size();
+  }
+
+  void rebuild_tree()
+  {
+    std::vector<Index> present;
+    present.reserve(m_present_count);
+    for (Index i = 0; i < Index(m_points.size()); ++i)
+      if (is_present(i))
+        present.push_back(i);
+    build_tree(present);
+  }
+
   // Sets the candidate list of `q` to the first `capacity` entries of its
   // neighbour order (or all of them when fewer points are present), by a
   // depth-first search of the Kd tree that orders ties exactly.
@@ -149,7 +175,7 @@ private:
     best.clear();
     const Working_point& center = m_points.points[q];
     double offsets[3] = { 0., 0., 0. };
-    const auto& box = m_tree.bounding_box();
+    const auto& box = m_tree->bounding_box();
     double root_distance = 0.;
     for (int d = 0; d < 3; ++d)
     {
@@ -157,7 +183,7 @@ private:
       offsets[d] = c < box.min_coord(d) ? box.min_coord(d) - c : (c > box.max_coord(d) ? c - box.max_coord(d) : 0.);
       root_distance += offsets[d] * offsets[d];
     }
-    search(m_tree.root(), root_distance, offsets, q, best);
+    search(m_tree->root(), root_distance, offsets, q, best);
 
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
     for (std::size_t j = 0; j < best.size(); ++j)
@@ -269,7 +295,9 @@ private:
   const unsigned int m_k;
   const std::size_t m_capacity;
   const std::size_t m_block;
-  Tree m_tree;
+  std::unique_ptr<Tree> m_tree;
+  std::size_t m_tree_size = 0;     // points the tree was built with
+  std::size_t m_present_count = 0; // points present
   std::vector<Index> m_candidates; // m_capacity entries per point
   std::vector<Count> m_count;
   std::vector<char> m_present;
