@@ -21,6 +21,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -91,6 +92,21 @@ long long parse_integer(const std::string& option, const std::string& text)
   return (long long)value;
 }
 
+// One of the named choices of an option, e.g. `--order lowest`.
+template <typename Value>
+Value parse_choice(const std::string& option, const std::string& text,
+                   const std::vector<std::pair<std::string, Value> >& choices)
+{
+  std::string names;
+  for (const auto& choice : choices)
+  {
+    if (choice.first == text)
+      return choice.second;
+    names += (names.empty() ? "" : " or ") + choice.first;
+  }
+  throw Bad_option(option + " expects " + names + ", got '" + text + "'");
+}
+
 Command_line parse(int argc, char** argv)
 {
   Command_line c;
@@ -128,25 +144,12 @@ Command_line parse(int argc, char** argv)
       c.k = unsigned(k);
     }
     else if (a == "--order")
-    {
-      const std::string o = value();
-      if (o == "lowest")
-        c.options.removal_order = ES::Removal_order::lowest_entropy_first;
-      else if (o == "highest")
-        c.options.removal_order = ES::Removal_order::highest_entropy_first;
-      else
-        throw Bad_option("--order expects lowest or highest, got '" + o + "'");
-    }
+      c.options.removal_order = parse_choice<ES::Removal_order>(
+        a, value(), { { "lowest", ES::Removal_order::lowest_entropy_first },
+                      { "highest", ES::Removal_order::highest_entropy_first } });
     else if (a == "--normals")
-    {
-      const std::string e = value();
-      if (e == "pca")
-        c.options.normal_estimation = ES::Normal_estimation::pca;
-      else if (e == "jet")
-        c.options.normal_estimation = ES::Normal_estimation::jet;
-      else
-        throw Bad_option("--normals expects pca or jet, got '" + e + "'");
-    }
+      c.options.normal_estimation = parse_choice<ES::Normal_estimation>(
+        a, value(), { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
     else if (a == "--write-normals")
       c.write_normals = true;
     else if (a == "--quiet")

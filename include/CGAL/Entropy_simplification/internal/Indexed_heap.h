@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -42,7 +43,6 @@ public:
       sift_down(i);
   }
 
-  bool empty() const { return m_heap.empty(); }
   std::size_t size() const { return m_heap.size(); }
   const Entry& top() const { return m_heap.front(); }
   bool contains(Index id) const { return m_position[id] != none; }

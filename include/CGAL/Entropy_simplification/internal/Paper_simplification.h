@@ -121,9 +121,6 @@ public:
     });
   }
 
-  const Angle_term& angle(Index i) const { return m_angles[i]; }
-  const Index* neighbors(Index i) const { return m_knn.neighbors(i); }
-
 private:
   void refresh_angle(Index i) { m_angles[i] = make_angle_term(normal_angle(normal(i), m_reference)); }
 
