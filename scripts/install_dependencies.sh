@@ -11,4 +11,4 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   ca-certificates cmake make g++ \
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev \
-  catch2 doxygen libcgal-demo >/dev/null
+  catch2 doxygen libcgal-demo gnuplot-nox >/dev/null

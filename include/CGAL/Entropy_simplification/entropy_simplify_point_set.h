@@ -253,7 +253,8 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   constexpr bool has_normal_map = !parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value;
 
   const PointMap point_map = NP_helper::get_const_point_map(points, np);
-  const std::function<bool(double)>& callback =
+  // by value: get_parameter returns a temporary
+  const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
   std::vector<ES::Working_point> input = ES::copy_finite_points(points.begin(), points.end(), point_map);

@@ -1,0 +1,128 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The inputs of the benchmark: the replica of Experiment I, area-uniform
+// samples of CGAL's demo meshes, and real scans.
+
+#ifndef ENTROPY_SIMPLIFICATION_BENCH_INPUTS_H
+#define ENTROPY_SIMPLIFICATION_BENCH_INPUTS_H
+
+#include "bench_common.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+using Mesh = CGAL::Surface_mesh<Point>;
+
+inline Cloud replica(double noise, std::size_t scale_divisor = 1)
+{
+  CGAL::Entropy_simplification::Experiment_I_setup setup;
+  setup.range_noise = noise;
+  setup.board_points /= scale_divisor;
+  setup.sphere_points /= scale_divisor;
+  std::vector<std::pair<Point, int> > labelled;
+  CGAL::Entropy_simplification::experiment_I_replica<Point>(std::back_inserter(labelled), setup);
+  Cloud c;
+  c.name = noise == 0.002 ? "replica_2mm" : "replica_1.2mm";
+  c.description = "Experiment I replica, " + std::to_string(labelled.size()) + " points, range noise " +
+                  (noise == 0.002 ? std::string("2") : std::string("1.2")) + " mm";
+  for (const auto& p : labelled)
+  {
+    c.points.push_back(p.first);
+    c.labels.push_back(p.second);
+  }
+  c.diagonal = bounding_box_diagonal(c.points);
+  return c;
+}
+
+inline Mesh read_mesh(const std::string& file)
+{
+  Mesh mesh;
+  std::ifstream in(file);
+  if (!in || !(in >> mesh) || mesh.is_empty())
+    throw std::runtime_error("cannot read the mesh " + file);
+  return mesh;
+}
+
+// `n` points uniform in area on the mesh's faces, from CGAL's sampler with a
+// fixed seed; in the sampler's order, which is random across the surface.
+inline std::vector<Point> sample_mesh(const Mesh& mesh, std::size_t n, unsigned int seed)
+{
+  std::vector<Point> points;
+  CGAL::Polygon_mesh_processing::sample_triangle_mesh(
+    mesh, std::back_inserter(points),
+    CGAL::parameters::number_of_points_on_faces(n).do_sample_vertices(false).do_sample_edges(false).random_seed(seed));
+  points.resize((std::min)(points.size(), n));
+  return points;
+}
+
+// 1 for the points within `tolerance` of an edge whose two faces' normals
+// differ by more than `angle_degrees`, 0 for the others.
+inline std::vector<int> sharp_edge_labels(const Mesh& mesh, const std::vector<Point>& points, double angle_degrees,
+                                          double tolerance)
+{
+  using Segment = Kernel::Segment_3;
+  std::vector<Segment> sharp;
+  const double cos_limit = std::cos(angle_degrees * CGAL_PI / 180.);
+  for (auto e : mesh.edges())
+  {
+    const auto h = mesh.halfedge(e);
+    if (mesh.is_border(e))
+      continue;
+    const Vector n1 = CGAL::Polygon_mesh_processing::compute_face_normal(mesh.face(h), mesh);
+    const Vector n2 = CGAL::Polygon_mesh_processing::compute_face_normal(mesh.face(mesh.opposite(h)), mesh);
+    if (n1 * n2 < cos_limit)
+      sharp.emplace_back(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)));
+  }
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator> > >;
+  Tree tree(sharp.begin(), sharp.end());
+  tree.accelerate_distance_queries();
+  std::vector<int> labels;
+  for (const Point& p : points)
+    labels.push_back(!sharp.empty() && tree.squared_distance(p) <= tolerance * tolerance ? 1 : 0);
+  return labels;
+}
+
+inline Cloud mesh_sample(const std::string& name, const std::string& file, std::size_t n, bool label_sharp_edges)
+{
+  const Mesh mesh = read_mesh(file);
+  Cloud c;
+  c.name = name;
+  c.points = sample_mesh(mesh, n, 2018);
+  c.diagonal = bounding_box_diagonal(c.points);
+  c.description = file.substr(file.rfind('/') + 1) + " sampled uniformly in area, " + std::to_string(c.points.size()) +
+                  " points";
+  if (label_sharp_edges)
+  {
+    c.labels = sharp_edge_labels(mesh, c.points, 30., 0.005 * c.diagonal);
+    c.description += ", labelled within 0.5% of the diagonal of an edge sharper than 30 degrees";
+  }
+  return c;
+}
+
+inline Cloud scan(const std::string& name, const std::string& file)
+{
+  Cloud c;
+  c.name = name;
+  if (!CGAL::IO::read_points(file, std::back_inserter(c.points)) || c.points.empty())
+    throw std::runtime_error("cannot read the scan " + file);
+  c.diagonal = bounding_box_diagonal(c.points);
+  c.description = file.substr(file.rfind('/') + 1) + ", a real scan, " + std::to_string(c.points.size()) + " points";
+  return c;
+}
+
+} // namespace bench
+
+#endif // ENTROPY_SIMPLIFICATION_BENCH_INPUTS_H

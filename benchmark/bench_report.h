@@ -1,0 +1,308 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The benchmark's outputs: CSV, the data and gnuplot scripts of the figures,
+// and RESULTS.md.
+
+#ifndef ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
+#define ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
+
+#include "bench_metrics.h"
+#include "bench_methods.h"
+
+#include <CGAL/version.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace bench {
+
+struct Quality_row
+{
+  std::string input, method, family;
+  double ratio = 0.;
+  std::size_t target = 0, count = 0, reached = 0;
+  std::vector<double> parameters;
+  Quality quality;
+  bool skipped = false;
+};
+
+struct Timing_row
+{
+  std::string input, method;
+  double ratio = 0.;
+  std::size_t size = 0;
+  double pca_seconds = 0.;
+  Timing timing;
+  int runs = 0;
+  bool skipped = false;
+};
+
+struct Input_summary
+{
+  std::string name, description;
+  std::size_t size = 0, labelled = 0;
+  double pca_seconds = 0., seconds = 0.;
+  bool is_replica = false;
+  Quality original; // the metrics of the input itself (coverage 0)
+};
+
+struct Report
+{
+  std::vector<Input_summary> inputs;
+  std::vector<Quality_row> quality;
+  std::vector<Timing_row> timing;
+  bool quick = false;
+  int repeats = 3;
+  double skip_seconds = 0., total_seconds = 0.;
+};
+
+inline std::string file_name(const std::string& method)
+{
+  std::string s;
+  for (char c : method)
+    s += std::isalnum((unsigned char)c) ? char(std::tolower((unsigned char)c)) : '_';
+  return s;
+}
+
+inline std::string fixed(double v, int digits)
+{
+  if (std::isnan(v))
+    return "n/a";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+inline std::string scientific(double v)
+{
+  std::ostringstream s;
+  s << std::scientific << std::setprecision(2) << v;
+  return s.str();
+}
+
+inline std::string thousands(std::size_t v)
+{
+  std::string s = std::to_string(v);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3)
+    s.insert(std::size_t(i), ",");
+  return s;
+}
+
+inline std::string percent(double v) { return fixed(100. * v, 1) + "%"; }
+
+inline const Quality_row* find_row(const Report& r, const std::string& input, const std::string& method, double ratio)
+{
+  for (const Quality_row& q : r.quality)
+    if (q.input == input && q.method == method && q.ratio == ratio && !q.skipped)
+      return &q;
+  return nullptr;
+}
+
+inline const Timing_row* find_timing(const Report& r, const std::string& input, const std::string& method,
+                                     double ratio)
+{
+  for (const Timing_row& t : r.timing)
+    if (t.input == input && t.method == method && t.ratio == ratio && !t.skipped)
+      return &t;
+  return nullptr;
+}
+
+inline const Input_summary* find_input(const Report& r, const std::string& name)
+{
+  for (const Input_summary& s : r.inputs)
+    if (s.name == name)
+      return &s;
+  return nullptr;
+}
+
+inline std::vector<std::string> methods_of(const Report& r)
+{
+  std::vector<std::string> names;
+  for (const Quality_row& q : r.quality)
+    if (std::find(names.begin(), names.end(), q.method) == names.end())
+      names.push_back(q.method);
+  for (const Timing_row& t : r.timing)
+    if (std::find(names.begin(), names.end(), t.method) == names.end())
+      names.push_back(t.method);
+  return names;
+}
+
+inline std::vector<double> ratios_of(const Report& r, const std::string& input)
+{
+  std::set<double> s;
+  for (const Quality_row& q : r.quality)
+    if (q.input == input)
+      s.insert(q.ratio);
+  return std::vector<double>(s.begin(), s.end());
+}
+
+inline std::string machine_description()
+{
+  std::string cpu = "unknown CPU";
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);)
+    if (line.rfind("model name", 0) == 0)
+    {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  double memory = 0.;
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string line; std::getline(meminfo, line);)
+    if (line.rfind("MemTotal", 0) == 0)
+      memory = std::stod(line.substr(line.find(':') + 1)) / 1024. / 1024.;
+  std::ostringstream s;
+  s << cpu << ", " << std::thread::hardware_concurrency() << " hardware threads, " << fixed(memory, 0)
+    << " GiB; g++ " << __VERSION__ << ", -O3 -DNDEBUG; CGAL " << CGAL_VERSION_STR;
+  return s.str();
+}
+
+inline void write_csv(const Report& r, const std::string& dir)
+{
+  std::ofstream q(dir + "/quality.csv");
+  q << "input,method,family,percent,target,count,reached_before_trim,parameters,mean,p95,p99,max,point_to_plane,"
+       "uniformity,mean_entropy,labelled,sphere_radius,plane_rmse,skipped\n";
+  q.precision(10);
+  for (const Quality_row& row : r.quality)
+  {
+    const Quality& m = row.quality;
+    std::string parameters;
+    for (double p : row.parameters)
+      parameters += (parameters.empty() ? "" : ";") + std::to_string(p);
+    q << row.input << ',' << '"' << row.method << '"' << ',' << row.family << ',' << row.ratio << ',' << row.target
+      << ',' << row.count << ',' << row.reached << ',' << parameters << ',' << m.mean << ',' << m.p95 << ','
+      << m.p99 << ',' << m.max << ',' << m.point_to_plane << ',' << m.uniformity << ',' << m.mean_entropy << ','
+      << m.labelled << ',' << m.sphere_radius << ',' << m.plane_rmse << ',' << row.skipped << '\n';
+  }
+  std::ofstream t(dir + "/timing.csv");
+  t << "input,method,percent,size,seconds,normal_seconds,pca_seconds,ratio_to_pca,runs,skipped\n";
+  t.precision(6);
+  for (const Timing_row& row : r.timing)
+    t << row.input << ',' << '"' << row.method << '"' << ',' << row.ratio << ',' << row.size << ','
+      << row.timing.seconds << ',' << row.timing.normal_seconds << ',' << row.pca_seconds << ','
+      << row.timing.seconds / row.pca_seconds << ',' << row.runs << ',' << row.skipped << '\n';
+}
+
+// One data file per input, one block per method (gnuplot's `index`), and one
+// script drawing every metric against the ratio.
+inline void write_charts(const Report& r, const std::string& dir)
+{
+  const std::vector<std::string> methods = methods_of(r);
+  std::vector<std::string> inputs;
+  for (const Input_summary& s : r.inputs)
+    if (!ratios_of(r, s.name).empty())
+      inputs.push_back(s.name);
+
+  for (const std::string& input : inputs)
+  {
+    std::ofstream data(dir + "/data_" + input + ".dat");
+    data.precision(8);
+    const Input_summary* summary = find_input(r, input);
+    for (const std::string& method : methods)
+    {
+      data << "# " << method << "\n";
+      for (double ratio : ratios_of(r, input))
+        if (const Quality_row* q = find_row(r, input, method, ratio))
+          data << ratio << ' ' << q->quality.mean << ' ' << q->quality.p99 << ' ' << q->quality.max << ' '
+               << q->quality.point_to_plane << ' ' << q->quality.uniformity << ' ' << q->quality.mean_entropy << ' '
+               << (summary->labelled ? (double(q->quality.labelled) / double(q->count)) /
+                                         (double(summary->labelled) / double(summary->size))
+                                     : 0.)
+               << '\n';
+      data << "\n\n";
+    }
+  }
+
+  struct Metric
+  {
+    std::string file, title;
+    int column;
+    bool log_y;
+  };
+  const std::vector<Metric> metrics = {
+    { "mean_distance", "mean distance from the input to the result / diagonal", 2, true },
+    { "p99_distance", "99th percentile of that distance / diagonal", 3, true },
+    { "hausdorff", "maximum of that distance (one-sided Hausdorff) / diagonal", 4, true },
+    { "point_to_plane", "point-to-plane RMS error of the input / diagonal", 5, true },
+    { "uniformity", "coefficient of variation of the spacing of the result", 6, false },
+    { "mean_entropy", "mean entropy of the paper (Eq. 7), bits", 7, false },
+  };
+  std::ofstream gp(dir + "/charts.gp");
+  gp << "set terminal pngcairo noenhanced size 1800,1100 font 'sans,10'\nset key outside right top font 'sans,9'\n"
+     << "set logscale x\nset xlabel 'points kept (%)'\nset grid\n";
+  const int columns = 3, rows = int(inputs.size() + columns - 1) / columns;
+  for (const Metric& metric : metrics)
+  {
+    gp << "set output 'chart_" << metric.file << ".png'\n"
+       << "set multiplot layout " << rows << "," << columns << " title '" << metric.title << "'\n"
+       << (metric.log_y ? "set logscale y\n" : "unset logscale y\n");
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+    {
+      gp << "set title '" << inputs[i] << "'\n" << (i == 0 ? "set key\n" : "unset key\n") << "plot ";
+      for (std::size_t m = 0; m < methods.size(); ++m)
+        gp << (m ? ", " : "") << "'data_" << inputs[i] << ".dat' index " << m << " using 1:" << metric.column
+           << " with linespoints lw 1.5 pt " << (m % 13) + 1 << " title '" << methods[m] << "'";
+      gp << "\n";
+    }
+    gp << "unset multiplot\n";
+  }
+  // fandisk: share of points near sharp edges over the input's share
+  if (std::find(inputs.begin(), inputs.end(), "fandisk") != inputs.end())
+  {
+    gp << "set output 'chart_fandisk_sharp_edges.png'\nset terminal pngcairo noenhanced size 900,600 font 'sans,10'\n"
+       << "unset logscale y\nset key outside right top\nset title 'fandisk: share of kept points near a sharp edge / "
+          "the input share'\nplot ";
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      gp << (m ? ", " : "") << "'data_fandisk.dat' index " << m << " using 1:8 with linespoints lw 1.5 pt "
+         << (m % 13) + 1 << " title '" << methods[m] << "'";
+    gp << "\n";
+  }
+}
+
+// The kept points of the replica and the lion for each method, like the
+// paper's Fig. 3 and Fig. 6.
+inline void write_pictures(const Report& r, const std::string& dir, const std::string& input, double ratio,
+                           bool front_view)
+{
+  const std::vector<std::string> methods = methods_of(r);
+  std::vector<std::string> shown;
+  for (const std::string& m : methods)
+    if (find_row(r, input, m, ratio))
+      shown.push_back(m);
+  if (shown.empty())
+    return;
+  std::ofstream gp(dir + "/pictures_" + input + ".gp");
+  const int columns = 4, rows = int(shown.size() + columns - 1) / columns;
+  gp << "set terminal pngcairo size " << 450 * columns << "," << 430 * rows << " font 'sans,10'\n"
+     << "set output 'pictures_" << input << ".png'\n"
+     << "set multiplot layout " << rows << "," << columns << " title '" << input << ", " << ratio
+     << "% of the points kept by each method'\n"
+     << "unset key\nunset tics\nunset border\nunset colorbox\n";
+  if (front_view)
+    gp << "set size ratio -1\nset palette defined (0 '#777777', 1 '#d62728')\nset cbrange [0:1]\n";
+  else
+    gp << "set view equal xyz\nset view 80,30,1.4\nset palette rgb 33,13,10\n";
+  for (const std::string& m : shown)
+  {
+    gp << "set title '" << m << "'\n";
+    if (front_view)
+      gp << "plot 'points/" << input << "__" << file_name(m) << ".txt' using 1:2:4 with dots lc palette\n";
+    else
+      gp << "splot 'points/" << input << "__" << file_name(m) << ".txt' using 1:3:2:3 with dots lc palette\n";
+  }
+  gp << "unset multiplot\n";
+}
+
+} // namespace bench
+
+#endif // ENTROPY_SIMPLIFICATION_BENCH_REPORT_H

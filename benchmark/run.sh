@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The benchmark's one command. Builds it (-O3 -DNDEBUG), runs every method on
+# every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
+# figures). With --quick: smaller inputs, a couple of minutes, written to
+# build-benchmark/quick/ so that the committed results stay as they are.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode="${1:-}"
+if [ -n "$mode" ] && [ "$mode" != "--quick" ]; then
+  echo "usage: benchmark/run.sh [--quick]" >&2
+  exit 2
+fi
+out=benchmark
+if [ "$mode" = "--quick" ]; then out=build-benchmark/quick; fi
+command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (apt-get install gnuplot-nox)" >&2; exit 1; }
+
+cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
+  -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=OFF -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
+cmake --build build-benchmark --target run_benchmark -j"$(nproc)"
+mkdir -p "$out/results"
+rm -f "$out"/results/*.png "$out"/results/points/*.txt
+build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
+(cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
+echo "benchmark/run.sh: wrote $out/RESULTS.md"
