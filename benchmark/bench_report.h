@@ -193,6 +193,30 @@ inline void write_csv(const Report& r, const std::string& dir)
       << row.timing.seconds / row.pca_seconds << ',' << row.runs << ',' << row.skipped << '\n';
 }
 
+// A colour and a marker of its own for each method; the package's methods
+// drawn thicker.
+inline std::string line_style(const std::vector<std::string>& methods, std::size_t m)
+{
+  static const char* const colours[] = { "#d62728", "#ff7f0e", "#1f77b4", "#17becf", "#2ca02c", "#bcbd22",
+                                         "#000000", "#7f7f7f", "#9467bd", "#e377c2", "#8c564b", "#aec7e8" };
+  const bool package = methods[m].rfind("entropy", 0) == 0;
+  std::ostringstream s;
+  s << "with linespoints lw " << (package ? 3 : 1.5) << " pt " << (m % 13) + 1 << " lc rgb '"
+    << colours[m % (sizeof colours / sizeof *colours)] << "'";
+  return s.str();
+}
+
+// A multiplot panel holding only the key: one invisible curve per method.
+inline void write_key_panel(std::ostream& gp, const std::vector<std::string>& methods)
+{
+  gp << "set key center center box font 'sans,11'\nunset title\nunset border\nunset tics\nunset grid\n"
+     << "unset xlabel\nset xrange [0:1]\nset yrange [0:1]\nunset logscale\nplot ";
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    gp << (m ? ", " : "") << "NaN " << line_style(methods, m) << " title '" << methods[m] << "'";
+  gp << "\nunset key\nset border\nset tics\nset grid\nset xlabel 'points kept (%)'\nset autoscale\n"
+     << "set logscale x\n";
+}
+
 // One data file per input, one block per method (gnuplot's `index`), and one
 // script drawing every metric against the ratio.
 inline void write_charts(const Report& r, const std::string& dir)
@@ -238,9 +262,10 @@ inline void write_charts(const Report& r, const std::string& dir)
     { "mean_entropy", "mean entropy of the paper (Eq. 7), bits", 7, false },
   };
   std::ofstream gp(dir + "/charts.gp");
-  gp << "set terminal pngcairo noenhanced size 1800,1100 font 'sans,10'\nset key outside right top font 'sans,9'\n"
-     << "set logscale x\nset xlabel 'points kept (%)'\nset grid\n";
-  const int columns = 3, rows = int(inputs.size() + columns - 1) / columns;
+  gp << "set terminal pngcairo noenhanced size 1800,1100 font 'sans,10'\n"
+     << "set logscale x\nset xlabel 'points kept (%)'\nset grid\nunset key\n";
+  // the key takes the panel after the inputs
+  const int columns = 3, rows = int(inputs.size() + columns) / columns;
   for (const Metric& metric : metrics)
   {
     gp << "set output 'chart_" << metric.file << ".png'\n"
@@ -248,23 +273,24 @@ inline void write_charts(const Report& r, const std::string& dir)
        << (metric.log_y ? "set logscale y\n" : "unset logscale y\n");
     for (std::size_t i = 0; i < inputs.size(); ++i)
     {
-      gp << "set title '" << inputs[i] << "'\n" << (i == 0 ? "set key\n" : "unset key\n") << "plot ";
+      gp << "set title '" << inputs[i] << "'\nplot ";
       for (std::size_t m = 0; m < methods.size(); ++m)
-        gp << (m ? ", " : "") << "'data_" << inputs[i] << ".dat' index " << m << " using 1:" << metric.column
-           << " with linespoints lw 1.5 pt " << (m % 13) + 1 << " title '" << methods[m] << "'";
+        gp << (m ? ", " : "") << "'data_" << inputs[i] << ".dat' index " << m << " using 1:" << metric.column << ' '
+           << line_style(methods, m) << " notitle";
       gp << "\n";
     }
+    write_key_panel(gp, methods);
     gp << "unset multiplot\n";
   }
   // fandisk: share of points near sharp edges over the input's share
   if (std::find(inputs.begin(), inputs.end(), "fandisk") != inputs.end())
   {
-    gp << "set output 'chart_fandisk_sharp_edges.png'\nset terminal pngcairo noenhanced size 900,600 font 'sans,10'\n"
+    gp << "set output 'chart_fandisk_sharp_edges.png'\nset terminal pngcairo noenhanced size 1000,600 font 'sans,10'\n"
        << "unset logscale y\nset key outside right top\nset title 'fandisk: share of kept points near a sharp edge / "
           "the input share'\nplot ";
     for (std::size_t m = 0; m < methods.size(); ++m)
-      gp << (m ? ", " : "") << "'data_fandisk.dat' index " << m << " using 1:8 with linespoints lw 1.5 pt "
-         << (m % 13) + 1 << " title '" << methods[m] << "'";
+      gp << (m ? ", " : "") << "'data_fandisk.dat' index " << m << " using 1:8 " << line_style(methods, m)
+         << " title '" << methods[m] << "'";
     gp << "\n";
   }
 }
