@@ -14,9 +14,10 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -56,15 +57,40 @@ inline Mesh read_mesh(const std::string& file)
   return mesh;
 }
 
-// `n` points uniform in area on the mesh's faces, from CGAL's sampler with a
-// fixed seed; in the sampler's order, which is random across the surface.
-inline std::vector<Point> sample_mesh(const Mesh& mesh, std::size_t n, unsigned int seed)
+// `n` points uniform in area on the mesh's faces, in random order: a face
+// drawn with probability proportional to its area, then a uniform point in
+// it. CGAL 5.5's sample_triangle_mesh is not used: it draws the point inside
+// a face from CGAL's default generator whatever the seed, so its samples
+// change from run to run.
+inline std::vector<Point> sample_mesh(const Mesh& mesh, std::size_t n, std::uint64_t seed)
 {
+  std::vector<std::array<Point, 3> > triangles;
+  std::vector<double> cumulative_area;
+  double total = 0.;
+  for (auto f : mesh.faces())
+  {
+    const auto h = mesh.halfedge(f);
+    const std::array<Point, 3> t = { mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                     mesh.point(mesh.target(mesh.next(h))) };
+    total += std::sqrt(Kernel::Triangle_3(t[0], t[1], t[2]).squared_area());
+    triangles.push_back(t);
+    cumulative_area.push_back(total);
+  }
+  Random random(seed);
   std::vector<Point> points;
-  CGAL::Polygon_mesh_processing::sample_triangle_mesh(
-    mesh, std::back_inserter(points),
-    CGAL::parameters::number_of_points_on_faces(n).do_sample_vertices(false).do_sample_edges(false).random_seed(seed));
-  points.resize((std::min)(points.size(), n));
+  points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t f = std::size_t(
+      std::upper_bound(cumulative_area.begin(), cumulative_area.end(), random.uniform() * total) -
+      cumulative_area.begin());
+    const std::array<Point, 3>& t = triangles[(std::min)(f, triangles.size() - 1)];
+    // uniform barycentric coordinates
+    const double r1 = std::sqrt(random.uniform()), r2 = random.uniform();
+    const double a = 1. - r1, b = r1 * (1. - r2), c = r1 * r2;
+    points.emplace_back(a * t[0].x() + b * t[1].x() + c * t[2].x(), a * t[0].y() + b * t[1].y() + c * t[2].y(),
+                        a * t[0].z() + b * t[1].z() + c * t[2].z());
+  }
   return points;
 }
 
