@@ -66,11 +66,11 @@ inline std::vector<Index> first_indices(const std::vector<Indexed_point>& v, std
   return kept;
 }
 
-// The package, in one removal order.
-inline Method package_method(const Cloud& cloud, ES::Removal_order order, const std::string& name)
+// The package with the given options. The paper's mode is progressive: one
+// run serves every ratio. The default mode's radius depends on the target, so
+// it runs for each ratio, as a user would call it.
+inline Method package_method(const Cloud& cloud, const ES::Options& options, const std::string& name)
 {
-  ES::Options options;
-  options.removal_order = order;
   auto run = [&cloud, options](std::size_t m, Timing* timing) {
     std::vector<Indexed_point> v = indexed(cloud);
     CGAL::Real_timer timer;
@@ -90,13 +90,16 @@ inline Method package_method(const Cloud& cloud, ES::Removal_order order, const 
   Method method;
   method.name = name;
   method.family = "package";
-  method.progressive_order = [run](std::size_t m_min) {
-    const std::vector<Indexed_point> v = run(m_min, nullptr);
-    std::vector<Index> order;
-    for (const Indexed_point& e : v)
-      order.push_back(e.second);
-    return order;
-  };
+  if (options.mode == ES::Mode::paper)
+    method.progressive_order = [run](std::size_t m_min) {
+      const std::vector<Indexed_point> v = run(m_min, nullptr);
+      std::vector<Index> order;
+      for (const Indexed_point& e : v)
+        order.push_back(e.second);
+      return order;
+    };
+  else
+    method.select = [run, &cloud](std::size_t m) { return subset(cloud, first_indices(run(m, nullptr), m)); };
   method.timed_run = [run](std::size_t m, const std::vector<double>&) {
     Timing t;
     run(m, &t);
@@ -143,8 +146,15 @@ inline std::vector<Method> all_methods(Method_context& context)
   const double small = cloud.diagonal * 1e-7, large = cloud.diagonal;
   std::vector<Method> methods;
 
-  methods.push_back(package_method(cloud, ES::Removal_order::lowest_entropy_first, "entropy, lowest first"));
-  methods.push_back(package_method(cloud, ES::Removal_order::highest_entropy_first, "entropy, highest first"));
+  ES::Options default_mode, without_entropy, lowest, highest;
+  without_entropy.feature_weight = 0.;
+  lowest.mode = highest.mode = ES::Mode::paper;
+  lowest.removal_order = ES::Removal_order::lowest_entropy_first;
+  highest.removal_order = ES::Removal_order::highest_entropy_first;
+  methods.push_back(package_method(cloud, default_mode, "package default"));
+  methods.push_back(package_method(cloud, without_entropy, "default without entropy term"));
+  methods.push_back(package_method(cloud, lowest, "entropy, lowest first"));
+  methods.push_back(package_method(cloud, highest, "entropy, highest first"));
 
   auto timed = [](const std::function<void()>& f) {
     CGAL::Real_timer timer;

@@ -34,7 +34,7 @@ const char* const usage =
   "usage: entropy_simplify INPUT OUTPUT (--ratio R | --count N) [options]\n"
   "\n"
   "Simplifies the point set INPUT to exactly N points, or to the fraction R of\n"
-  "its points (rounded up), by the local entropy of normal angles, and writes\n"
+  "its points (rounded up), guided by the local entropy of normals, and writes\n"
   "the kept points, with all their properties, to OUTPUT. The formats are\n"
   "those CGAL::IO reads and writes for point sets (.xyz, .ply, .off, ...),\n"
   "chosen by file extension.\n"
@@ -43,8 +43,12 @@ const char* const usage =
   "  --ratio R          keep the fraction R of the points, 0 < R <= 1\n"
   "  --count N          keep N points (all of them if N exceeds the input)\n"
   "  -k K               neighbours per point (default 10)\n"
-  "  --order O          lowest | highest: which entropy is removed first\n"
-  "                     (default lowest, the paper's text)\n"
+  "  --mode M           default | paper: weighted elimination with denser\n"
+  "                     features (default), or the paper's method\n"
+  "  --feature-weight W default mode: features keep up to 1 + W times the\n"
+  "                     density of flat regions (default 3; 0: no entropy term)\n"
+  "  --order O          paper mode: lowest | highest, which entropy is removed\n"
+  "                     first (default lowest, the paper's text)\n"
   "  --normals E        pca | jet: normal estimation (default pca)\n"
   "  --write-normals    store the final normals of the kept points in OUTPUT\n"
   "                     (replacing the input's normals, if any)\n"
@@ -111,6 +115,7 @@ Command_line parse(int argc, char** argv)
 {
   Command_line c;
   std::vector<std::string> positional;
+  bool order_given = false, feature_weight_given = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -143,10 +148,23 @@ Command_line parse(int argc, char** argv)
         throw Bad_option("-k must lie in [1, 1000]");
       c.k = unsigned(k);
     }
+    else if (a == "--mode")
+      c.options.mode = parse_choice<ES::Mode>(
+        a, value(), { { "default", ES::Mode::weighted_elimination }, { "paper", ES::Mode::paper } });
+    else if (a == "--feature-weight")
+    {
+      c.options.feature_weight = parse_number(a, value());
+      if (!(c.options.feature_weight >= 0.))
+        throw Bad_option("--feature-weight must be non-negative");
+      feature_weight_given = true;
+    }
     else if (a == "--order")
+    {
+      order_given = true;
       c.options.removal_order = parse_choice<ES::Removal_order>(
         a, value(), { { "lowest", ES::Removal_order::lowest_entropy_first },
                       { "highest", ES::Removal_order::highest_entropy_first } });
+    }
     else if (a == "--normals")
       c.options.normal_estimation = parse_choice<ES::Normal_estimation>(
         a, value(), { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
@@ -163,6 +181,10 @@ Command_line parse(int argc, char** argv)
     throw Bad_option("expected INPUT and OUTPUT, got " + std::to_string(positional.size()) + " file names");
   if (c.ratio.has_value() == c.count.has_value())
     throw Bad_option("give exactly one of --ratio and --count");
+  if (order_given && c.options.mode != ES::Mode::paper)
+    throw Bad_option("--order applies to --mode paper only");
+  if (feature_weight_given && c.options.mode == ES::Mode::paper)
+    throw Bad_option("--feature-weight applies to the default mode only");
   c.input = positional[0];
   c.output = positional[1];
   return c;

@@ -30,11 +30,12 @@ int main(int argc, char** argv)
     std::cout << " " << name;
   std::cout << std::endl;
 
-  // The package's own options: here, remove the highest entropy first and
-  // estimate normals by jet fitting.
+  // The package's own options: here, the default mode with normals
+  // estimated by jet fitting, and features kept up to 5 times denser than
+  // flat regions.
   ES::Options options;
-  options.removal_order = ES::Removal_order::highest_entropy_first;
   options.normal_estimation = ES::Normal_estimation::jet;
+  options.feature_weight = 4.;
 
   // Normals are written only to a map given explicitly.
   points.add_normal_map();

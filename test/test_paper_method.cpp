@@ -1,7 +1,8 @@
-// Tests of the paper's method: the numeric routines against hand-computed
-// values, the progressive removal against a brute-force reference, and the
-// guarantees of entropy_simplify_point_set (count, subset, permutation,
-// progressive prefixes, callback, determinism, bad input).
+// Tests of the paper's method (Mode::paper): the numeric routines against
+// hand-computed values, the progressive removal against a brute-force
+// reference, and the guarantees of entropy_simplify_point_set in that mode
+// (count, subset, permutation, progressive prefixes, callback, determinism,
+// bad input).
 
 #include <catch2/catch.hpp>
 
@@ -34,6 +35,13 @@ using ES::internal::Angle_term;
 
 namespace {
 
+ES::Options paper_mode()
+{
+  ES::Options options;
+  options.mode = ES::Mode::paper;
+  return options;
+}
+
 std::vector<Indexed> with_positions(const std::vector<Point>& points)
 {
   std::vector<Indexed> result;
@@ -50,7 +58,7 @@ struct Run
 };
 
 template <typename Tag = CGAL::Sequential_tag, typename NP>
-Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = {})
+Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = paper_mode())
 {
   Run run;
   run.range = with_positions(points);
@@ -150,7 +158,7 @@ TEST_CASE("Normals agree with CGAL's pca_estimate_normals and jet_estimate_norma
       ours.emplace_back(p, CGAL::NULL_VECTOR);
       cgal.emplace_back(p, CGAL::NULL_VECTOR);
     }
-    ES::Options options;
+    ES::Options options = paper_mode();
     options.normal_estimation = method;
     const auto pm = CGAL::First_of_pair_property_map<std::pair<Point, Vector> >();
     const auto nm = CGAL::Second_of_pair_property_map<std::pair<Point, Vector> >();
@@ -186,7 +194,7 @@ TEST_CASE("The removal sequence equals a brute-force recomputation after every r
     for (ES::Removal_order order : { ES::Removal_order::lowest_entropy_first, ES::Removal_order::highest_entropy_first })
       for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
       {
-        ES::Options options;
+        ES::Options options = paper_mode();
         options.removal_order = order;
         options.normal_estimation = method;
         const unsigned int k = 8;
@@ -326,12 +334,14 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
   SECTION("fewer than k + 1 points, or k out of range, is an error")
   {
     std::vector<Point> few(points.begin(), points.begin() + 10);
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(few, 10, count(5)), std::invalid_argument);
-    std::vector<Point> copy = points;
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1, count(50)), std::invalid_argument);
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1001, count(50)),
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(few, 10, count(5), paper_mode()),
                     std::invalid_argument);
-    ES::Options jet;
+    std::vector<Point> copy = points;
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1, count(50), paper_mode()),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 1001, count(50), paper_mode()),
+                    std::invalid_argument);
+    ES::Options jet = paper_mode();
     jet.normal_estimation = ES::Normal_estimation::jet;
     CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 4, count(50), jet),
                     std::invalid_argument);
@@ -340,16 +350,21 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
   SECTION("a target of 0, or below k + 1, is an error; a target above the size keeps everything")
   {
     std::vector<Point> copy = points;
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(0)), std::invalid_argument);
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10)), std::invalid_argument);
-    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
-                      copy, 10, CGAL::parameters::number_of_output_points(-3)),
+    const ES::Options paper = paper_mode();
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(0), paper),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10), paper),
                     std::invalid_argument);
     CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
-                      copy, 10, CGAL::parameters::select_percentage(0.)),
+                      copy, 10, CGAL::parameters::number_of_output_points(-3), paper),
                     std::invalid_argument);
-    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(points.size())) == copy.end());
-    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10 * points.size())) == copy.end());
+    CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+                      copy, 10, CGAL::parameters::select_percentage(0.), paper),
+                    std::invalid_argument);
+    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(points.size()), paper) ==
+          copy.end());
+    CHECK(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(10 * points.size()), paper) ==
+          copy.end());
     CHECK(copy == points);
   }
   SECTION("NaN or infinite coordinates are rejected before anything moves")
@@ -368,7 +383,7 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
   SECTION("a null reference normal is an error")
   {
     std::vector<Point> copy = points;
-    ES::Options options;
+    ES::Options options = paper_mode();
     options.reference_normal = std::array<double, 3>{ 0., 0., 0. };
     CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options),
                     std::invalid_argument);

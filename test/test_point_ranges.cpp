@@ -155,10 +155,11 @@ TEST_CASE("Real scans from libcgal-demo: count, subset, determinism", "[real dat
     std::vector<Epick::Point_3> points;
     REQUIRE(CGAL::IO::read_points(std::string(ES_TEST_DATA_DIR) + "/" + name, std::back_inserter(points)));
     REQUIRE(points.size() > 1000);
-    for (ES::Removal_order order : { ES::Removal_order::lowest_entropy_first, ES::Removal_order::highest_entropy_first })
+    ES::Options lowest, highest;
+    lowest.mode = highest.mode = ES::Mode::paper;
+    highest.removal_order = ES::Removal_order::highest_entropy_first;
+    for (const ES::Options& options : { ES::Options(), lowest, highest })
     {
-      ES::Options options;
-      options.removal_order = order;
       std::vector<Epick::Point_3> sequential = points, parallel = points;
       const auto is = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
         sequential, 10, CGAL::parameters::select_percentage(5.), options);

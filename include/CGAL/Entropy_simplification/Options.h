@@ -44,7 +44,13 @@ enum class Normal_estimation
 */
 enum class Mode
 {
-  paper ///< the method of the paper (Eq. 1-5), with exact progressive updates
+  /// The default: weighted sample elimination (Yuksel 2015) on the input's
+  /// spacing, whose interaction radius shrinks where the entropy of the
+  /// normals of a neighbourhood marks a feature, so that features keep more
+  /// points and flat regions thin evenly, without holes.
+  weighted_elimination,
+  /// The method of the paper (Eq. 1-5), with exact progressive updates.
+  paper
 };
 
 /*!
@@ -59,16 +65,28 @@ enum class Mode
 struct Options
 {
   /// the simplification method
-  Mode mode = Mode::paper;
+  Mode mode = Mode::weighted_elimination;
 
-  /// which end of the importance order is removed first
+  /// `Mode::paper` only: which end of the importance order is removed first
   Removal_order removal_order = Removal_order::lowest_entropy_first;
 
-  /// how normals are estimated, initially and after each removal
+  /// how normals are estimated (in `Mode::paper`, also after each removal)
   Normal_estimation normal_estimation = Normal_estimation::pca;
 
   /*!
-    the normal of the reference plane of Eq. 4. When empty (the default), it is
+    `Mode::weighted_elimination` only: how much denser features are kept. The
+    kept density grows by up to `1 + feature_weight` where the entropy of the
+    normals marks a feature. The weight is lowered where needed so that the
+    features take at most 45% more points than the flat regions would (on
+    noisy scans, a third of the area can have a high entropy). 0 switches the
+    entropy term off: plain weighted sample elimination. Must be finite and
+    non-negative.
+  */
+  double feature_weight = 3.;
+
+  /*!
+    `Mode::paper` and the accuracy indicator only: the normal of the reference
+    plane of Eq. 4. When empty (the default), it is
     the normal of the plane that `CGAL::linear_least_squares_fitting_3()` fits
     to all the points given to the function (Eq. 3), computed once. Set it, for
     example, to measure several simplified clouds against the plane of their

@@ -12,6 +12,7 @@
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
+#include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
 #include <CGAL/Entropy_simplification/internal/named_parameters.h>
 #include <CGAL/Entropy_simplification/internal/order_by_removal.h>
 #include <CGAL/Entropy_simplification/internal/reference_plane.h>
@@ -21,6 +22,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -45,48 +47,73 @@ inline void check_simplification_arguments(std::size_t n, unsigned int k, std::s
   if (n < std::size_t(k) + 1)
     throw std::invalid_argument("k = " + std::to_string(k) + " needs at least k + 1 points; the range has " +
                                 std::to_string(n));
-  if (target < std::size_t(k) + 1)
-    throw std::invalid_argument("the simplified set must keep at least k + 1 = " + std::to_string(k + 1) +
+  if (options.mode == Mode::paper && target < std::size_t(k) + 1)
+    throw std::invalid_argument("the paper's mode must keep at least k + 1 = " + std::to_string(k + 1) +
                                 " points so that every point keeps k neighbours; " + std::to_string(target) +
                                 " were asked");
+  if (!(options.feature_weight >= 0. && std::isfinite(options.feature_weight)))
+    throw std::invalid_argument("Options::feature_weight must be finite and non-negative");
 }
 
-// Runs the progressive removal on points given in input order, down to
-// `target` points, and returns the input positions of the removed points in
-// removal order. `write_normal(position, normal)` receives the final normal of
-// each remaining point, unless the callback interrupted the initialisation.
+// Iterations of the relocation that ends the default mode.
+constexpr int relocation_iterations = 2;
+
+// Runs an engine down to `target` points and returns the input positions of
+// the removed points in removal order. `write_normal(position, normal)`
+// receives the normal of each remaining point, unless the callback
+// interrupted the initialisation, which counts for the first quarter of the
+// progress.
+template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
+std::vector<Index> run_engine(Engine& engine, const Indexed_points& indexed, std::size_t target,
+                              const std::function<bool(double)>& callback, const NormalWriter& write_normal)
+{
+  auto report = [&callback](double fraction) { return !callback || callback(fraction); };
+  std::vector<Index> removed;
+  if (!engine.template initialize<ConcurrencyTag>([&](double f) { return report(0.25 * f); }))
+    return removed;
+
+  const std::size_t removals = indexed.size() - target;
+  const std::size_t period = (std::max)(std::size_t(1), removals / 1000);
+  removed.reserve(removals);
+  const bool completed = engine.template remove_down_to<ConcurrencyTag>(target, [&](Index p) {
+    removed.push_back(indexed.input_position[p]);
+    return removed.size() % period != 0 || report(0.25 + 0.75 * double(removed.size()) / double(removals));
+  });
+  if (completed)
+  {
+    // A relocated point takes the place, in the removal order, of the point
+    // that replaces it.
+    std::vector<std::size_t> rank(indexed.size(), 0);
+    for (std::size_t r = 0; r < removed.size(); ++r)
+      rank[removed[r]] = r;
+    for (const auto& swap : engine.template relocate<ConcurrencyTag>(relocation_iterations))
+      removed[rank[indexed.input_position[swap.second]]] = indexed.input_position[swap.first];
+  }
+
+  for (Index i = 0; i < Index(indexed.size()); ++i)
+    if (engine.is_present(i))
+      write_normal(indexed.input_position[i], engine.normal(i));
+  return removed;
+}
+
+// Runs the method of `options.mode` on points given in input order.
 template <typename ConcurrencyTag, typename NormalWriter>
 std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, std::size_t target,
                             const Options& options, const std::function<bool(double)>& callback,
                             const NormalWriter& write_normal)
 {
-  const std::size_t n = points.size();
-  const Working_vector reference = reference_normal(options, points);
+  if (options.mode == Mode::paper)
+  {
+    const Working_vector reference = reference_normal(options, points);
+    const Indexed_points indexed = sort_spatially(points);
+    points = std::vector<Working_point>();
+    Paper_simplification engine(indexed, k, options, reference);
+    return run_engine<ConcurrencyTag>(engine, indexed, target, callback, write_normal);
+  }
   const Indexed_points indexed = sort_spatially(points);
   points = std::vector<Working_point>();
-
-  // Progress: the initialisation counts for the first quarter.
-  auto report = [&callback](double fraction) { return !callback || callback(fraction); };
-  Paper_simplification engine(indexed, k, options, reference);
-  std::vector<Index> removed;
-  if (!engine.template initialize<ConcurrencyTag>([&](double f) { return report(0.25 * f); }))
-    return removed;
-
-  const std::size_t removals = n - target;
-  const std::size_t period = (std::max)(std::size_t(1), removals / 1000);
-  removed.reserve(removals);
-  while (removed.size() < removals)
-  {
-    removed.push_back(indexed.input_position[engine.remove_next()]);
-    if (removed.size() % period == 0 &&
-        !report(0.25 + 0.75 * double(removed.size()) / double(removals)))
-      break;
-  }
-
-  for (Index i = 0; i < Index(n); ++i)
-    if (engine.is_present(i))
-      write_normal(indexed.input_position[i], engine.normal(i));
-  return removed;
+  Weighted_elimination engine(indexed, k, options);
+  return run_engine<ConcurrencyTag>(engine, indexed, target, callback, write_normal);
 }
 
 } // namespace internal
@@ -100,30 +127,49 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
 /**
    \ingroup PkgEntropySimplificationRef
 
-   Simplifies a point set progressively by the local entropy of normal angles,
-   the method of "A New Progressive Simplification Method for Point Cloud
-   Using Local Entropy of Normal Angle" (J. Indian Soc. Remote Sens. 46(4),
-   2018), down to exactly the requested number of points.
+   Simplifies a point set down to exactly the requested number of points,
+   guided by the local entropy of normals, after "A New Progressive
+   Simplification Method for Point Cloud Using Local Entropy of Normal Angle"
+   (J. Indian Soc. Remote Sens. 46(4), 2018).
 
    This function modifies the order of the input points so as to pack all
    kept points first, in their input order, and returns an iterator over the
    first point to remove (see erase-remove idiom). The removed points follow
-   in reverse order of removal, the last removed first: for any `m` between
-   the number of kept points and the size of the range, the first `m` points
-   are what the method keeps when asked for `m` points, so one run serves
-   every larger target. Points are only moved: coordinates and other
-   attributes are never altered.
+   in reverse order of removal, the last removed first, so that the first `m`
+   points, for any `m` above the number kept, are a simplification to `m`
+   points (in `Mode::paper`, exactly the one a call asking for `m` points
+   gives). Points are only moved: coordinates and other attributes are never
+   altered.
 
-   <b>The method.</b> With `N(p)` the `k` nearest neighbours of `p` among the
-   points still present (`p` excluded, ties broken by input position):
-   - the normal of `p` is estimated on `p` and `N(p)`, `k + 1` points, as
-     `CGAL::pca_estimate_normals()` does (Eq. 1-2; `Options::normal_estimation`
-     selects jet fitting instead); points that all coincide have no normal;
+   With `N(p)` the `k` nearest neighbours of `p` (`p` excluded, ties broken by
+   input position), and the normal of `p` estimated on `p` and `N(p)`, `k + 1`
+   points, as `CGAL::pca_estimate_normals()` does (Eq. 1-2;
+   `Options::normal_estimation` selects jet fitting instead), the two methods
+   of `Options::mode` are:
+
+   <b>`Mode::weighted_elimination` (the default).</b> Weighted sample
+   elimination (Yuksel 2015): each point is weighed by the points within
+   twice its interaction radius, and the most crowded point is removed, its
+   weight taken off its neighbours', until the target; the radius is set for
+   the target count on the area the points sample, in stages that halve the
+   count. The radius shrinks where the normals of `p` and `N(p)` vary, so
+   that features keep up to `1 + Options::feature_weight` times the density
+   of flat regions: the variation is the entropy of the eigenvalues of the
+   orientation tensor of these normals, independent of their orientation and
+   of any reference plane, measured against the cloud's own noise (its
+   median), at the scale of `k` and at a coarser scale. The radius also
+   grows where the input is sparse, so that the kept density follows the
+   input's to the power 2/3. Two iterations of Lloyd's relaxation restricted
+   to the input points end it. Flat regions thin evenly, without holes; the
+   user manual gives the reasoning and the measurements.
+
+   <b>`Mode::paper`, the paper's method,</b> with `N(p)` taken among the
+   points still present:
    - a reference plane is fitted to the whole input once (Eq. 3; or given in
      `Options::reference_normal`);
    - the normal angle `theta_p` of `p` is the angle between its normal and the
      reference plane, in `[0, pi/2]` (Eq. 4); it is 0 for a point without
-     normal;
+     normal (points that all coincide have none);
    - the importance of `p` is the entropy, in nats, of the angles of `p` and
      `N(p)` normalised by their sum (Eq. 5), with `0 log 0 = 0` and an
      importance of 0 when all these angles are 0;
@@ -136,12 +182,13 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
    points would give. The paper only says to update the normals of the
    removed point's "first ring" and the importances of its "second ring";
    this contract is stricter and testable. The user manual documents each of
-   these choices and what they measure.
+   these choices and what they measure: taken literally, this method leaves
+   holes.
 
-   \tparam ConcurrencyTag enables sequential versus parallel initial
-   estimation. Possible values are `Sequential_tag`, `Parallel_tag`, and
-   `Parallel_if_available_tag`. The removals are sequential; the result does
-   not depend on the tag.
+   \tparam ConcurrencyTag enables sequential versus parallel estimation and
+   neighbour searches. Possible values are `Sequential_tag`, `Parallel_tag`,
+   and `Parallel_if_available_tag`. The removals are sequential; the result
+   does not depend on the tag.
    \tparam PointRange is a model of `Range`. The value type of its iterator is
    the key type of the named parameter `point_map`; its elements must be
    move-assignable.
@@ -161,7 +208,7 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
        size of the range keeps every point}
        \cgalParamType{an integral type}
        \cgalParamDefault{none: give this or `select_percentage`}
-       \cgalParamExtra{Must be at least `k + 1`.}
+       \cgalParamExtra{Must be positive; in `Mode::paper`, at least `k + 1`.}
      \cgalParamNEnd
 
      \cgalParamNBegin{select_percentage}
@@ -172,7 +219,7 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
        of 100 points is 7 points.}
        \cgalParamType{double}
        \cgalParamDefault{none: give this or `number_of_output_points`}
-       \cgalParamExtra{The resulting number must be at least `k + 1`.}
+       \cgalParamExtra{In `Mode::paper`, the resulting number must be at least `k + 1`.}
      \cgalParamNEnd
 
      \cgalParamNBegin{point_map}
@@ -185,8 +232,9 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
 
      \cgalParamNBegin{normal_map}
        \cgalParamDescription{a property map that receives the final unit normal of every
-       kept point, estimated on its neighbours among the kept points (the null
-       vector where it is undefined). Nothing else is written: without this
+       kept point (the null vector where it is undefined): in `Mode::paper`,
+       estimated on its neighbours among the kept points; in the default mode,
+       on its neighbours in the input, a better estimate. Nothing else is written: without this
        parameter, the points' normals, such as those of a `CGAL::Point_set_3`,
        are left untouched.}
        \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
@@ -221,13 +269,14 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
    moved) when a coordinate is not finite; when `k` is below 2 (below 5 with
    jet fitting) or above 1000; when the range has fewer than `k + 1` points;
    when `select_percentage` is outside `(0, 100]` or `number_of_output_points`
-   is not positive; when fewer than `k + 1` points would be kept; when
+   is not positive; when `Options::feature_weight` is negative or not finite;
+   in `Mode::paper`, when fewer than `k + 1` points would be kept, or when
    `Options::reference_normal` is null or not finite.
 
    Duplicated points are valid input: they are ordinary neighbours at distance
-   0. A planar cloud gives every point the same importance, so points are
-   removed in input order; a collinear cloud gives an arbitrary but
-   deterministic result.
+   0. In `Mode::paper`, a planar cloud gives every point the same
+   importance, so points are removed in input order. A collinear cloud gives
+   an arbitrary but deterministic result.
 */
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>

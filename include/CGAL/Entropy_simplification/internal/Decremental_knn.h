@@ -10,13 +10,9 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <CGAL/assertions.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
+#include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
-#include <boost/iterator/counting_iterator.hpp>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -44,23 +40,7 @@ namespace internal {
 // Requires at least k + 1 present points at all times.
 class Decremental_knn
 {
-  using Point_map = CGAL::Pointer_property_map<Working_point>::const_type;
-  using Traits = CGAL::Search_traits_adapter<Index, Point_map, CGAL::Search_traits_3<Working_kernel> >;
-  using Tree = CGAL::Kd_tree<Traits>;
   using Count = std::uint16_t;
-
-  // A neighbour in the making, ordered by (distance, input position).
-  struct Neighbor
-  {
-    double squared_distance;
-    Index input_position;
-    Index id;
-    bool operator<(const Neighbor& other) const
-    {
-      return squared_distance < other.squared_distance ||
-             (squared_distance == other.squared_distance && input_position < other.input_position);
-    }
-  };
 
 public:
   static constexpr unsigned int largest_k = 1000;
@@ -111,7 +91,7 @@ public:
   void remove(Index p, std::vector<Index>& changed)
   {
     m_present[p] = 0;
-    m_tree->remove(p, [p](Index i) { return i == p; });
+    m_tree->remove(p);
     if (2 * --m_present_count < m_tree_size)
       rebuild_tree();
     for (unsigned int j = 0; j < m_k; ++j)
@@ -150,9 +130,7 @@ private:
   // twice the first build.
   void build_tree(const std::vector<Index>& indices)
   {
-    m_tree = std::make_unique<Tree>(indices.begin(), indices.end(), Tree::Splitter(),
-                                    Traits(CGAL::make_property_map(m_points.points)));
-    m_tree->build();
+    m_tree = std::make_unique<Point_tree>(m_points, indices.begin(), indices.end());
     m_tree_size = m_present_count = indices.size();
   }
 
@@ -167,77 +145,15 @@ private:
   }
 
   // Sets the candidate list of `q` to the first `capacity` entries of its
-  // neighbour order (or all of them when fewer points are present), by a
-  // depth-first search of the Kd tree that orders ties exactly.
+  // neighbour order (or all of them when fewer points are present).
   void fill_candidates(Index q)
   {
     thread_local std::vector<Neighbor> best;
-    best.clear();
-    const Working_point& center = m_points.points[q];
-    double offsets[3] = { 0., 0., 0. };
-    const auto& box = m_tree->bounding_box();
-    double root_distance = 0.;
-    for (int d = 0; d < 3; ++d)
-    {
-      const double c = center.cartesian(d);
-      offsets[d] = c < box.min_coord(d) ? box.min_coord(d) - c : (c > box.max_coord(d) ? c - box.max_coord(d) : 0.);
-      root_distance += offsets[d] * offsets[d];
-    }
-    search(m_tree->root(), root_distance, offsets, q, best);
-
+    m_tree->nearest(q, m_capacity, best);
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
     for (std::size_t j = 0; j < best.size(); ++j)
       list[j] = best[j].id;
     m_count[q] = Count(best.size());
-  }
-
-  // The search of CGAL::Orthogonal_k_neighbor_search (closer child first,
-  // `distance` the squared distance from the query to the node's box), keeping
-  // the `capacity` first points in neighbour order. A subtree is skipped only
-  // when it is farther than the worst point kept, with a margin for the
-  // rounding of `distance`, so ties at that distance are still considered.
-  void search(Tree::Node_const_handle node, double distance, double offsets[3], Index q,
-              std::vector<Neighbor>& best) const
-  {
-    const Working_point& center = m_points.points[q];
-    if (node->is_leaf())
-    {
-      const auto leaf = static_cast<Tree::Leaf_node_const_handle>(node);
-      for (auto it = leaf->begin(); it != leaf->end(); ++it)
-        if (*it != q)
-          keep_if_better(Neighbor{ squared_distance(center, m_points.points[*it]),
-                                   m_points.input_position[*it], *it },
-                         best);
-      return;
-    }
-    const auto inner = static_cast<Tree::Internal_node_const_handle>(node);
-    const int d = inner->cutting_dimension();
-    const double c = center.cartesian(d);
-    const double to_upper = c - inner->upper_low_value();
-    const double to_lower = c - inner->lower_high_value();
-    const bool lower_first = to_upper + to_lower < 0.;
-    search(lower_first ? inner->lower() : inner->upper(), distance, offsets, q, best);
-
-    const double offset = lower_first ? to_upper : to_lower;
-    const double old_offset = offsets[d];
-    const double other_distance = distance + offset * offset - old_offset * old_offset;
-    if (best.size() < m_capacity || other_distance * (1. - 1e-12) <= best.back().squared_distance)
-    {
-      offsets[d] = offset;
-      search(lower_first ? inner->upper() : inner->lower(), other_distance, offsets, q, best);
-      offsets[d] = old_offset;
-    }
-  }
-
-  void keep_if_better(const Neighbor& candidate, std::vector<Neighbor>& best) const
-  {
-    if (best.size() == m_capacity)
-    {
-      if (!(candidate < best.back()))
-        return;
-      best.pop_back();
-    }
-    best.insert(std::upper_bound(best.begin(), best.end(), candidate), candidate);
   }
 
   // Erases `p`, one of the k nearest neighbours of `q`, from the candidates of
@@ -295,7 +211,7 @@ private:
   const unsigned int m_k;
   const std::size_t m_capacity;
   const std::size_t m_block;
-  std::unique_ptr<Tree> m_tree;
+  std::unique_ptr<Point_tree> m_tree;
   std::size_t m_tree_size = 0;     // points the tree was built with
   std::size_t m_present_count = 0; // points present
   std::vector<Index> m_candidates; // m_capacity entries per point

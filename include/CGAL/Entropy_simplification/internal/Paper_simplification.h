@@ -15,6 +15,7 @@
 #include <CGAL/Entropy_simplification/internal/normal_angle_entropy.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -74,9 +75,46 @@ public:
     return true;
   }
 
-  std::size_t size() const { return m_heap.size(); }
   bool is_present(Index i) const { return m_knn.is_present(i); }
 
+  // Removes points down to `target`, calling `removed(i)` after each
+  // removal; stops early, returning false, when it returns false.
+  template <typename ConcurrencyTag, typename Removed>
+  bool remove_down_to(std::size_t target, const Removed& removed)
+  {
+    while (m_heap.size() > target)
+      if (!removed(remove_next()))
+        return false;
+    return true;
+  }
+
+  // The paper's method moves no point after the removals.
+  template <typename ConcurrencyTag>
+  std::vector<std::pair<Index, Index> > relocate(int)
+  {
+    return {};
+  }
+
+  // The normal of a present point, estimated on its present neighbours.
+  Working_vector normal(Index i) const
+  {
+    const Index* neighbors = m_knn.neighbors(i);
+    return estimate_normal(m_options.normal_estimation, m_k + 1,
+                           [&](std::size_t j) -> const Working_point& {
+                             return m_points.points[j == 0 ? i : neighbors[j - 1]];
+                           });
+  }
+
+  // Eq. 5 over a present point and its present neighbours.
+  double importance(Index i) const
+  {
+    const Index* neighbors = m_knn.neighbors(i);
+    return angle_entropy(m_k + 1, [&](std::size_t j) -> const Angle_term& {
+      return m_angles[j == 0 ? i : neighbors[j - 1]];
+    });
+  }
+
+private:
   // Removes the least important point (by the chosen order, ties broken by
   // input position) and updates the others; returns the removed point.
   Index remove_next()
@@ -102,26 +140,6 @@ public:
     return p;
   }
 
-  // The normal of a present point, estimated on its present neighbours.
-  Working_vector normal(Index i) const
-  {
-    const Index* neighbors = m_knn.neighbors(i);
-    return estimate_normal(m_options.normal_estimation, m_k + 1,
-                           [&](std::size_t j) -> const Working_point& {
-                             return m_points.points[j == 0 ? i : neighbors[j - 1]];
-                           });
-  }
-
-  // Eq. 5 over a present point and its present neighbours.
-  double importance(Index i) const
-  {
-    const Index* neighbors = m_knn.neighbors(i);
-    return angle_entropy(m_k + 1, [&](std::size_t j) -> const Angle_term& {
-      return m_angles[j == 0 ? i : neighbors[j - 1]];
-    });
-  }
-
-private:
   void refresh_angle(Index i) { m_angles[i] = make_angle_term(normal_angle(normal(i), m_reference)); }
 
   // The heap pops its least key first.
