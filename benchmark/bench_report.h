@@ -53,6 +53,7 @@ struct Input_summary
   std::size_t size = 0, labelled = 0;
   double pca_seconds = 0., seconds = 0.;
   bool is_replica = false;
+  bool held_out = false; // never used to tune the default mode
   Quality original; // the metrics of the input itself (coverage 0)
 };
 

@@ -9,6 +9,7 @@
 #define ENTROPY_SIMPLIFICATION_BENCH_RESULTS_MARKDOWN_H
 
 #include "bench_report.h"
+#include "bench_targets.h"
 
 namespace bench {
 
@@ -143,8 +144,9 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
   md << "## Inputs\n\n| input | description | points | pca_estimate_normals (s) |\n|---|---|---:|---:|\n";
   for (const Input_summary& s : r.inputs)
     md << "| " << s.name << " | " << s.description << " | " << thousands(s.size) << " | " << fixed(s.pca_seconds, 3)
-       << " |\n";
+       << (s.held_out ? " (held out)" : "") << " |\n";
   md << "\n";
+  write_targets(md, r);
 
   // ---------------------------------------------------------------- Experiment I
   std::vector<const Input_summary*> replicas;
@@ -179,7 +181,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
            << percent(double(paper::table2[p][2]) / double(paper::table2[p][0])) << " |\n";
       }
     for (const std::string& m : methods_of(r))
-      if (m.rfind("CGAL", 0) == 0)
+      if (m.rfind("CGAL", 0) == 0 || m == "package default" || m == "default without entropy term")
       {
         md << "| " << m << " |";
         for (const Input_summary* s : replicas)
@@ -214,7 +216,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
         md << ' ' << fixed(paper::table3[p][0], 4) << " | " << fixed(paper::table3[p][1], 4) << " |\n";
       }
     for (const std::string& m : methods_of(r))
-      if (m.rfind("CGAL", 0) == 0)
+      if (m.rfind("CGAL", 0) == 0 || m == "package default" || m == "default without entropy term")
       {
         md << "| " << m << " |";
         for (const Input_summary* s : replicas)
@@ -468,6 +470,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
        << " for lowest-first, by construction.\n";
   }
   md << "\n### Where the package stands against each peer\n\nOver every input and ratio where both ran:\n\n";
+  peer_summary(md, r, "package default");
   peer_summary(md, r, "entropy, lowest first");
   peer_summary(md, r, "entropy, highest first");
 

@@ -8,6 +8,10 @@ unset colorbox
 set view equal xyz
 set view 80,30,1.4
 set palette rgb 33,13,10
+set title 'package default'
+splot 'points/lion__package_default.txt' using 1:3:2:3 with dots lc palette
+set title 'default without entropy term'
+splot 'points/lion__default_without_entropy_term.txt' using 1:3:2:3 with dots lc palette
 set title 'entropy, lowest first'
 splot 'points/lion__entropy__lowest_first.txt' using 1:3:2:3 with dots lc palette
 set title 'entropy, highest first'

@@ -8,6 +8,10 @@ unset colorbox
 set size ratio -1
 set palette defined (0 '#777777', 1 '#d62728')
 set cbrange [0:1]
+set title 'package default'
+plot 'points/replica_2mm__package_default.txt' using 1:2:4 with dots lc palette
+set title 'default without entropy term'
+plot 'points/replica_2mm__default_without_entropy_term.txt' using 1:2:4 with dots lc palette
 set title 'entropy, lowest first'
 plot 'points/replica_2mm__entropy__lowest_first.txt' using 1:2:4 with dots lc palette
 set title 'entropy, highest first'
