@@ -310,7 +310,7 @@ inline void write_pictures(const Report& r, const std::string& dir, const std::s
     return;
   std::ofstream gp(dir + "/pictures_" + input + ".gp");
   const int columns = 4, rows = int(shown.size() + columns - 1) / columns;
-  gp << "set terminal pngcairo size " << 450 * columns << "," << 430 * rows << " font 'sans,10'\n"
+  gp << "set terminal pngcairo noenhanced size " << 450 * columns << "," << 430 * rows << " font 'sans,10'\n"
      << "set output 'pictures_" << input << ".png'\n"
      << "set multiplot layout " << rows << "," << columns << " title '" << input << ", " << ratio
      << "% of the points kept by each method'\n"

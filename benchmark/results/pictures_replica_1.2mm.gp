@@ -1,4 +1,4 @@
-set terminal pngcairo size 1800,1290 font 'sans,10'
+set terminal pngcairo noenhanced size 1800,1290 font 'sans,10'
 set output 'pictures_replica_1.2mm.png'
 set multiplot layout 3,4 title 'replica_1.2mm, 10% of the points kept by each method'
 unset key
