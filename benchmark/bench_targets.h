@@ -93,7 +93,8 @@ inline int targets_table(std::ostream& md, const Report& r, const std::vector<co
               cell + "sharp-edge share " + fixed(sr, 3) + " times the input's, " + fixed(share_ratio(*s, *w), 3) +
               " without the entropy term. Reaching " + fixed(limit, 1) + " means keeping " +
               fixed(100. * limit * ratio / 100., 0) + "% of the points labelled near an edge (within 0.5% of the "
-              "diagonal), a wider band than the neighbourhoods of k points in which the entropy sees the edge.");
+              "diagonal); the entropy sees an edge only within k neighbours of it, and the band's farther points are "
+              "likely thinned as flat ones (not measured separately).");
         }
         else if (s->name == "replica_1.2mm" && ratio == 10.)
         {
