@@ -7,8 +7,10 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 # libcgal-demo carries CGAL's sample scans and meshes; its recommended Qt
-# packages are not needed.
+# packages are not needed. clang and libclang-rt-14-dev give libFuzzer;
+# cloudcompare, under xvfb-run, checks that the program's output opens.
 $SUDO apt-get install -y -qq --no-install-recommends \
   ca-certificates cmake make g++ \
-  libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev \
-  catch2 doxygen libcgal-demo gnuplot-nox >/dev/null
+  libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev libcli11-dev \
+  catch2 doxygen libcgal-demo gnuplot-nox \
+  clang libclang-rt-14-dev bsdutils cloudcompare xvfb xauth >/dev/null

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Builds and runs the test suite (Catch2 through CTest), including the
-# documentation build, the command-line tool and an install + find_package
-# check; then the Catch2 suite again under AddressSanitizer and UBSan.
+# Builds and runs the test suite (Catch2 and the command-line tests through
+# CTest), including the documentation build and an install + find_package
+# check; then the Catch2 suites again under AddressSanitizer and UBSan; then
+# the fuzzer: the committed corpus replayed, and 60 s of fuzzing with a fixed
+# seed, under ASan and UBSan (see test/fuzz/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_TESTS=ON
@@ -10,5 +12,9 @@ ctest --test-dir build --output-on-failure -j"$(nproc)"
 
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_TESTS=ON \
   -DENTROPY_SIMPLIFICATION_SANITIZE=ON -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=OFF -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF
-cmake --build build-asan --target entropy_simplification_tests -j"$(nproc)"
-UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 build-asan/test/entropy_simplification_tests
+cmake --build build-asan --target entropy_simplification_tests entropy_simplify_program_tests -j"$(nproc)"
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+build-asan/test/entropy_simplification_tests
+(cd build-asan/test && ./entropy_simplify_program_tests)
+
+bash scripts/fuzz.sh 60

@@ -380,6 +380,30 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
       CHECK(std::memcmp(copy.data(), before.data(), copy.size() * sizeof(Point)) == 0);
     }
   }
+  SECTION("coordinates beyond 1e150 are rejected before anything moves, in both modes; up to it they work")
+  {
+    for (const ES::Options& options : { ES::Options(), paper_mode() })
+    {
+      for (double huge : { 1e155, -2e150, 1e300 })
+      {
+        std::vector<Point> copy = points;
+        copy[7] = Point(0.5, 0.5, huge);
+        const std::vector<Point> before = copy;
+        CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options),
+                          Catch::Contains("point #7") && Catch::Contains("1e150"));
+        CHECK(copy == before);
+      }
+      // the whole cloud at the limit's scale: a valid simplification, not a crash
+      std::vector<Point> scaled;
+      for (const Point& p : points)
+        scaled.push_back(Point(p.x() * 1e149, p.y() * 1e149, p.z() * 1e149));
+      const std::vector<Point> before = scaled;
+      const auto first_removed =
+        CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(scaled, 10, count(50), options);
+      CHECK(std::distance(scaled.begin(), first_removed) == 50);
+      CHECK(std::is_permutation(scaled.begin(), scaled.end(), before.begin()));
+    }
+  }
   SECTION("a null reference normal is an error")
   {
     std::vector<Point> copy = points;

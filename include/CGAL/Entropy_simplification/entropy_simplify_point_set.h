@@ -266,7 +266,8 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
    empty range, or when nothing is removed.
 
    \throw std::invalid_argument (in every build type, before any point is
-   moved) when a coordinate is not finite; when `k` is below 2 (below 5 with
+   moved) when a coordinate is not finite or exceeds 1e150 in magnitude (squared
+   distances would overflow); when `k` is below 2 (below 5 with
    jet fitting) or above 1000; when the range has fewer than `k + 1` points;
    when `select_percentage` is outside `(0, 100]` or `number_of_output_points`
    is not positive; when `Options::feature_weight` is negative or not finite;

@@ -45,12 +45,18 @@ inline double squared_distance(const Working_point& a, const Working_point& b)
   return dx * dx + dy * dy + dz * dz;
 }
 
+// The largest coordinate magnitude the package accepts. Squared distances,
+// and the products of the normal estimation's covariances, overflow doubles
+// near 1e154; 1e150 leaves room for sums over 1000 neighbours.
+constexpr double largest_coordinate = 1e150;
+
 // The points of a range in input order, in double precision. Throws
-// std::invalid_argument on a non-finite coordinate: the Kd tree and every
-// distance would be meaningless.
+// std::invalid_argument on a coordinate that is not finite or exceeds
+// largest_coordinate: the Kd tree and every distance would be meaningless.
 template <typename Iterator, typename PointMap>
 std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, PointMap point_map)
 {
+  auto in_range = [](double c) { return std::abs(c) <= largest_coordinate; }; // false for NaN
   std::vector<Working_point> points;
   for (Iterator it = first; it != beyond; ++it)
   {
@@ -58,9 +64,9 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
       throw std::invalid_argument("the package handles fewer than 2^32 - 1 points");
     const auto& p = get(point_map, *it);
     const Working_point q(double(p.x()), double(p.y()), double(p.z()));
-    if (!(std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z())))
+    if (!(in_range(q.x()) && in_range(q.y()) && in_range(q.z())))
       throw std::invalid_argument("point #" + std::to_string(points.size()) +
-                                  " has a non-finite coordinate");
+                                  " has a coordinate that is not finite or exceeds 1e150 in magnitude");
     points.push_back(q);
   }
   return points;

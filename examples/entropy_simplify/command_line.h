@@ -1,0 +1,206 @@
+// The command line of entropy_simplify, parsed with CLI11 and checked whole
+// before anything is read: a usage error never costs a computation.
+
+#ifndef ENTROPY_SIMPLIFY_COMMAND_LINE_H
+#define ENTROPY_SIMPLIFY_COMMAND_LINE_H
+
+#include "text_numbers.h"
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace entropy_simplify {
+
+namespace ES = CGAL::Entropy_simplification;
+
+// Exit codes, as --help documents them.
+constexpr int exit_done = 0, exit_failure = 1, exit_usage = 2;
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Settings
+{
+  std::string input, output;
+  std::optional<double> ratio;
+  std::optional<std::size_t> count;
+  unsigned int k = 10;
+  ES::Options options;
+  bool write_normals = false;
+  bool quiet = false;
+  std::optional<bool> binary; // --binary or --ascii; otherwise the input's PLY encoding
+};
+
+inline const char* examples_text()
+{
+  return "Examples, one per format (the output's extension sets its format):\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1    PLY: every vertex property kept,\n"
+         "                                                   in the input's encoding\n"
+         "  entropy_simplify scan.las out.las --ratio 0.1    LAS 1.0-1.4: kept records copied byte\n"
+         "                                                   for byte, VLRs and EVLRs kept\n"
+         "  entropy_simplify scan.las out.ply --count 100000 LAS to PLY: x y z as doubles, the LAS\n"
+         "                                                   attributes as properties\n"
+         "  entropy_simplify scan.xyz out.xyz --ratio 0.2    XYZ (and .pwn): x y z [nx ny nz]\n"
+         "  entropy_simplify mesh.off out.off --count 5000   OFF in: the vertices; OFF out: plain OFF\n"
+         "                                                   (Open3D reads no points-only OFF: use PLY)\n"
+         "LAZ is not supported (no LAZ library in Debian 12): decompress it first, e.g.\n"
+         "  laszip -i scan.laz -o scan.las   or   pdal translate scan.laz scan.las\n"
+         "\n"
+         "Exit codes: 0 done; 1 failure (the output is left untouched); 2 usage error;\n"
+         "130 interrupted by SIGINT or SIGTERM (the output is left untouched).";
+}
+
+namespace command_line_detail {
+
+inline double finite_number(const std::string& option, const std::string& text)
+{
+  double value;
+  if (!parse_number(text, value))
+    throw Usage_error(option + " expects a number, got '" + text + "'");
+  if (!std::isfinite(value))
+    throw Usage_error(option + " must be finite, got '" + text + "'");
+  return value;
+}
+
+inline unsigned long long whole_number(const std::string& option, const std::string& text)
+{
+  unsigned long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error == std::errc::result_out_of_range)
+    throw Usage_error(option + " " + text + " is out of range: at most " +
+                      std::to_string(std::numeric_limits<unsigned long long>::max()));
+  if (error != std::errc() || end != text.data() + text.size())
+    throw Usage_error(option + " expects a whole number, got '" + text + "'");
+  return value;
+}
+
+// The named choices of an option, e.g. `--order lowest`, to their values.
+template <typename Value>
+Value choice(const std::string& option, const std::string& text,
+             const std::vector<std::pair<std::string, Value> >& choices)
+{
+  std::string names;
+  for (const auto& c : choices)
+  {
+    if (c.first == text)
+      return c.second;
+    names += (names.empty() ? "" : " or ") + c.first;
+  }
+  throw Usage_error(option + " expects " + names + ", got '" + text + "'");
+}
+
+// The options' values, checked, and the rules between options.
+inline void check(Settings& s, const std::string& ratio, const std::string& count, const std::string& k,
+                  const std::string& feature_weight, const std::string& order)
+{
+  if (ratio.empty() == count.empty())
+    throw Usage_error("give exactly one of --ratio and --count");
+  if (!ratio.empty())
+  {
+    s.ratio = finite_number("--ratio", ratio);
+    if (!(*s.ratio > 0. && *s.ratio <= 1.))
+      throw Usage_error("--ratio must lie in (0, 1], got " + ratio);
+  }
+  if (!count.empty())
+  {
+    const unsigned long long n = whole_number("--count", count);
+    if (n == 0)
+      throw Usage_error("--count must be at least 1");
+    s.count = std::size_t((std::min)(n, (unsigned long long)(std::numeric_limits<std::size_t>::max)()));
+  }
+  const unsigned long long smallest_k = ES::internal::minimum_k(s.options.normal_estimation);
+  const unsigned long long largest_k = ES::internal::Decremental_knn::largest_k;
+  const unsigned long long kk = whole_number("-k", k);
+  if (kk < smallest_k || kk > largest_k)
+    throw Usage_error("-k must lie in [" + std::to_string(smallest_k) + ", " + std::to_string(largest_k) + "]" +
+                      (smallest_k > 2 ? " with --normals jet" : "") + ", got " + k);
+  s.k = unsigned(kk);
+  if (!feature_weight.empty())
+  {
+    if (s.options.mode == ES::Mode::paper)
+      throw Usage_error("--feature-weight applies to the default mode only");
+    s.options.feature_weight = finite_number("--feature-weight", feature_weight);
+    if (s.options.feature_weight < 0.)
+      throw Usage_error("--feature-weight must be non-negative, got " + feature_weight);
+  }
+  if (!order.empty())
+  {
+    if (s.options.mode != ES::Mode::paper)
+      throw Usage_error("--order applies to --mode paper only");
+    s.options.removal_order =
+      choice<ES::Removal_order>("--order", order, { { "lowest", ES::Removal_order::lowest_entropy_first },
+                                                    { "highest", ES::Removal_order::highest_entropy_first } });
+  }
+}
+
+} // namespace command_line_detail
+
+// The settings of a run; std::nullopt when --help was asked for (and
+// printed). Throws Usage_error.
+inline std::optional<Settings> parse_command_line(int argc, const char* const* argv)
+{
+  Settings s;
+  std::string ratio, count, k = "10", feature_weight, order, mode = "default", normals = "pca";
+  bool ascii = false, binary = false;
+  CLI::App app("Simplifies the point set INPUT to exactly N points, or to the fraction R of its points "
+               "(rounded up), keeping more points where the normals vary, and writes the kept points, "
+               "with their properties, to OUTPUT.",
+               "entropy_simplify");
+  app.add_option("INPUT", s.input, "the point file to read (.ply .xyz .pwn .off .las)")->required();
+  app.add_option("OUTPUT", s.output, "the file to write (.ply .xyz .pwn .off .las); never the input")->required();
+  app.add_option("--ratio", ratio, "keep the fraction R of the points, 0 < R <= 1")->type_name("R");
+  app.add_option("--count", count, "keep N points (all of them if N exceeds the input)")->type_name("N");
+  app.add_option("-k", k, "neighbours per point (default 10; 2-1000, 5-1000 with --normals jet)")->type_name("K");
+  app.add_option("--mode", mode, "default | paper: weighted elimination with denser features (default), "
+                                 "or the paper's method")->type_name("M");
+  app.add_option("--feature-weight", feature_weight, "default mode: features keep up to 1 + W times the "
+                                                     "density of flat regions (default 3; 0: no entropy term)")
+    ->type_name("W");
+  app.add_option("--order", order, "paper mode: lowest | highest, which entropy is removed first "
+                                   "(default lowest, the paper's text)")->type_name("O");
+  app.add_option("--normals", normals, "pca | jet: normal estimation (default pca)")->type_name("E");
+  app.add_flag("--write-normals", s.write_normals, "store the final normals of the kept points in OUTPUT "
+                                                   "(PLY, XYZ), replacing the input's normals, if any");
+  CLI::Option* ascii_flag = app.add_flag("--ascii", ascii, "write PLY as text");
+  CLI::Option* binary_flag = app.add_flag("--binary", binary, "write PLY as binary (little-endian)");
+  ascii_flag->excludes(binary_flag);
+  app.add_flag("-q,--quiet", s.quiet, "print nothing but errors");
+  app.footer(examples_text());
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::CallForHelp&)
+  {
+    std::cout << app.help();
+    return std::nullopt;
+  }
+  catch (const CLI::ParseError& e)
+  {
+    throw Usage_error(e.what());
+  }
+  using command_line_detail::choice;
+  s.options.mode = choice<ES::Mode>("--mode", mode, { { "default", ES::Mode::weighted_elimination },
+                                                      { "paper", ES::Mode::paper } });
+  s.options.normal_estimation = choice<ES::Normal_estimation>(
+    "--normals", normals, { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
+  command_line_detail::check(s, ratio, count, k, feature_weight, order);
+  if (ascii || binary)
+    s.binary = binary;
+  return s;
+}
+
+} // namespace entropy_simplify
+
+#endif // ENTROPY_SIMPLIFY_COMMAND_LINE_H

@@ -1,0 +1,112 @@
+// OFF: the vertices of an OFF or NOFF file in; a plain OFF of points out.
+
+#ifndef ENTROPY_SIMPLIFY_OFF_FORMAT_H
+#define ENTROPY_SIMPLIFY_OFF_FORMAT_H
+
+#include "xyz_format.h"
+
+#include <charconv>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace entropy_simplify {
+
+struct Off_cloud
+{
+  Point_table table;
+  std::vector<std::string> notes;
+};
+
+namespace off_detail {
+
+// The next line holding something other than a '#' comment, split in tokens.
+inline bool next_content_line(Text_reader& reader, std::vector<std::string_view>& tokens)
+{
+  std::string_view line;
+  while (reader.next_line(line))
+  {
+    tokens.clear();
+    std::string_view token;
+    while (next_token_of_line(line, token) && token.front() != '#')
+      tokens.push_back(token);
+    if (!tokens.empty())
+      return true;
+  }
+  return false;
+}
+
+inline std::size_t parse_count(std::string_view token, const char* what)
+{
+  std::size_t count = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), count);
+  if (error != std::errc() || end != token.data() + token.size())
+    throw Read_error(std::string("the OFF header's ") + what + " is not a count: '" +
+                     std::string(token.substr(0, 40)) + "'");
+  return count;
+}
+
+} // namespace off_detail
+
+// The header is `OFF` or `NOFF` (a normal after each vertex), then the
+// counts of vertices, faces and edges, on the same line or the next. Faces
+// are not read: a simplified point set has none.
+inline Off_cloud read_off(std::string_view bytes)
+{
+  Text_reader reader(bytes);
+  std::vector<std::string_view> tokens;
+  if (!off_detail::next_content_line(reader, tokens) || (tokens[0] != "OFF" && tokens[0] != "NOFF"))
+    throw Read_error("not an OFF file: it does not start with OFF or NOFF (other OFF variants are not supported)");
+  const bool normals = tokens[0] == "NOFF";
+  tokens.erase(tokens.begin());
+  if (tokens.empty() && !off_detail::next_content_line(reader, tokens))
+    throw Read_error("the OFF header has no vertex count");
+  if (tokens.size() != 3)
+    throw Read_error("line " + std::to_string(reader.line_number()) +
+                     ": the OFF header needs 3 counts (vertices, faces, edges)");
+  const std::size_t vertices = off_detail::parse_count(tokens[0], "vertex count");
+  const std::size_t faces = off_detail::parse_count(tokens[1], "face count");
+  // "0 0 0\n" is the shortest vertex line: a larger count cannot be true
+  const std::size_t width = normals ? 6 : 3;
+  if (vertices > (bytes.size() - reader.position()) / (2 * width))
+    throw Read_error("the OFF header claims " + std::to_string(vertices) + " vertices, more than the " +
+                     std::to_string(bytes.size() - reader.position()) + " bytes after it can hold");
+
+  static const char* const names[] = { "x", "y", "z", "nx", "ny", "nz" };
+  Off_cloud cloud;
+  for (std::size_t c = 0; c < width; ++c)
+    cloud.table.column(names[c], Scalar_type::float64).values.reserve(vertices);
+  for (std::size_t v = 0; v < vertices; ++v)
+  {
+    if (!off_detail::next_content_line(reader, tokens))
+      throw Read_error("the file is truncated: it ends after " + std::to_string(v) + " of " +
+                       std::to_string(vertices) + " vertices");
+    if (tokens.size() != width)
+      throw Read_error("line " + std::to_string(reader.line_number()) + " holds " +
+                       std::to_string(tokens.size()) + " values; a vertex of " + (normals ? "NOFF" : "OFF") +
+                       " holds " + std::to_string(width));
+    for (std::size_t c = 0; c < width; ++c)
+    {
+      double value;
+      if (!parse_number(tokens[c], value))
+        throw Read_error("line " + std::to_string(reader.line_number()) + ": '" +
+                         std::string(tokens[c].substr(0, 40)) + "' is not a number");
+      cloud.table.columns[c].values.push_back(value);
+    }
+  }
+  if (faces > 0)
+    cloud.notes.push_back(std::to_string(faces) + " faces dropped: a simplified point set has no faces");
+  return cloud;
+}
+
+// A plain OFF of the points: the variant every reader knows (CloudCompare
+// refuses NOFF, so normals are not written).
+inline void write_off(Sink& out, const Point_table& table)
+{
+  out.write("OFF\n" + std::to_string(table.size()) + " 0 0\n");
+  write_columns_as_lines(out, table, { "x", "y", "z" });
+}
+
+} // namespace entropy_simplify
+
+#endif // ENTROPY_SIMPLIFY_OFF_FORMAT_H

@@ -1,0 +1,165 @@
+// The point files entropy_simplify reads and writes, chosen by extension:
+// PLY, XYZ (and .pwn), OFF and LAS.
+
+#ifndef ENTROPY_SIMPLIFY_POINT_FILES_H
+#define ENTROPY_SIMPLIFY_POINT_FILES_H
+
+#include "command_line.h"
+#include "las_format.h"
+#include "off_format.h"
+#include "ply_format.h"
+#include "xyz_format.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace entropy_simplify {
+
+enum class Format { ply, xyz, off, las };
+
+// The format a file name's extension names; Usage_error for any other.
+inline Format format_of(const std::string& path)
+{
+  const std::size_t dot = path.rfind('.');
+  std::string extension = dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension == "ply")
+    return Format::ply;
+  if (extension == "xyz" || extension == "pwn")
+    return Format::xyz;
+  if (extension == "off")
+    return Format::off;
+  if (extension == "las")
+    return Format::las;
+  if (extension == "laz")
+    throw Usage_error("'" + path + "': " + laz_not_supported_message());
+  throw Usage_error("'" + path + "': unsupported format '" + extension +
+                    "'; the formats are .ply, .xyz, .pwn, .off and .las");
+}
+
+// A point file as read: a table of properties, or LAS records kept as they
+// are so that they are written back byte for byte.
+struct Cloud
+{
+  Point_table table; // every format but LAS
+  std::optional<Las_file> las;
+  bool binary_ply = true; // a PLY input's encoding
+  std::vector<std::string> comments, notes;
+
+  std::size_t size() const { return las ? las->point_count : table.size(); }
+};
+
+namespace point_files_detail {
+
+// Non-finite coordinates are an error of the file, reported with the point.
+inline void check_coordinates(const Point_table& table)
+{
+  const Column *x = table.find("x"), *y = table.find("y"), *z = table.find("z");
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (!(std::isfinite(x->values[i]) && std::isfinite(y->values[i]) && std::isfinite(z->values[i])))
+      throw Read_error("point #" + std::to_string(i) + " has a coordinate that is not a finite number");
+}
+
+} // namespace point_files_detail
+
+// Throws Read_error when the file is not of its format, has no points, or a
+// coordinate that is not finite.
+inline Cloud read_cloud(std::string_view bytes, Format format)
+{
+  if (bytes.empty())
+    throw Read_error("the file is empty");
+  Cloud cloud;
+  switch (format)
+  {
+  case Format::ply:
+  {
+    Ply_cloud ply = read_ply(bytes);
+    cloud.table = std::move(ply.table);
+    cloud.binary_ply = ply.encoding != Ply_encoding::ascii;
+    cloud.comments = std::move(ply.comments);
+    cloud.notes = std::move(ply.notes);
+    break;
+  }
+  case Format::xyz: cloud.table = read_xyz(bytes); break;
+  case Format::off:
+  {
+    Off_cloud off = read_off(bytes);
+    cloud.table = std::move(off.table);
+    cloud.notes = std::move(off.notes);
+    break;
+  }
+  case Format::las: cloud.las = read_las(bytes); break;
+  }
+  if (cloud.size() == 0)
+    throw Read_error("the file holds no points");
+  if (!cloud.las)
+    point_files_detail::check_coordinates(cloud.table);
+  return cloud;
+}
+
+// The coordinates the simplification sees. LAS points are taken without the
+// header's offset, so that a georeferenced scan gives the same result
+// wherever it lies, and without the precision lost by adding large offsets.
+inline std::array<double, 3> coordinates(const Cloud& cloud, const Column* const xyz[3], std::size_t i)
+{
+  if (cloud.las)
+    return cloud.las->local_xyz(i);
+  return { xyz[0]->values[i], xyz[1]->values[i], xyz[2]->values[i] };
+}
+
+// The properties of the kept points (`rows`) as a table, with `normals`
+// (one per row) in place of the input's when given.
+inline Point_table output_table(const Cloud& cloud, const std::vector<std::size_t>& rows,
+                                const std::vector<std::array<double, 3> >* normals)
+{
+  Point_table table = cloud.las ? las_point_table(*cloud.las, rows) : select_rows(cloud.table, rows);
+  if (normals)
+  {
+    const char* const names[] = { "nx", "ny", "nz" };
+    for (int c = 0; c < 3; ++c)
+    {
+      Column& column = table.column(names[c], Scalar_type::float64);
+      column.type = Scalar_type::float64;
+      column.values.resize(rows.size());
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        column.values[r] = (*normals)[r][c];
+    }
+  }
+  return table;
+}
+
+// The names of the columns of `table` that `format` does not store.
+inline std::vector<std::string> columns_not_stored(const Point_table& table, Format format)
+{
+  std::vector<std::string> kept = { "x", "y", "z" };
+  if (format == Format::xyz && has_normals(table))
+    kept.insert(kept.end(), { "nx", "ny", "nz" });
+  std::vector<std::string> dropped;
+  if (format == Format::xyz || format == Format::off)
+    for (const Column& column : table.columns)
+      if (std::find(kept.begin(), kept.end(), column.name) == kept.end())
+        dropped.push_back(column.name);
+  return dropped;
+}
+
+inline void write_table(Sink& out, const Point_table& table, Format format, bool binary_ply,
+                        const std::vector<std::string>& comments)
+{
+  switch (format)
+  {
+  case Format::ply: write_ply(out, table, binary_ply, comments); break;
+  case Format::xyz: write_xyz(out, table); break;
+  case Format::off: write_off(out, table); break;
+  case Format::las: break; // LAS is written from its records, with write_las
+  }
+}
+
+} // namespace entropy_simplify
+
+#endif // ENTROPY_SIMPLIFY_POINT_FILES_H

@@ -1,0 +1,295 @@
+// Output that never loses a file: the result goes to a hidden temporary file
+// in the output's folder, every write is checked, and only a complete,
+// fsync'ed file is renamed over the target. On an error, SIGINT or SIGTERM
+// the temporary file is removed and an existing output is left untouched;
+// after SIGKILL the target is untouched and at most the hidden temporary
+// file `.NAME.XXXXXX` remains.
+
+#ifndef ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
+#define ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
+
+#include "byte_io.h"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace entropy_simplify {
+
+// A file that cannot be written, or must not be: the message says why.
+struct Output_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// The exit code of a run stopped by SIGINT or SIGTERM.
+constexpr int interrupted_exit_code = 130;
+
+namespace safe_output_detail {
+
+// The temporary file the signal handler removes: a fixed buffer, since a
+// handler may not allocate.
+inline char pending_temporary[PATH_MAX];
+inline volatile std::sig_atomic_t has_pending_temporary = 0;
+
+inline void remove_temporary_and_exit(int)
+{
+  if (has_pending_temporary)
+    ::unlink(pending_temporary);
+  static const char message[] = "entropy_simplify: interrupted; no output was written\n";
+  [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  ::_exit(interrupted_exit_code);
+}
+
+// Blocks SIGINT and SIGTERM for its lifetime, so that the handler never sees
+// a half-updated pending_temporary, nor a rename half done.
+class Signals_blocked
+{
+public:
+  Signals_blocked()
+  {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(SIG_BLOCK, &set, &previous_);
+  }
+  ~Signals_blocked() { sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+  Signals_blocked(const Signals_blocked&) = delete;
+  Signals_blocked& operator=(const Signals_blocked&) = delete;
+
+private:
+  sigset_t previous_;
+};
+
+inline std::string reason(int error) { return std::strerror(error); }
+
+} // namespace safe_output_detail
+
+// Makes SIGINT and SIGTERM remove the pending temporary file and exit with
+// interrupted_exit_code.
+inline void remove_output_on_interrupt()
+{
+  struct sigaction action = {};
+  action.sa_handler = safe_output_detail::remove_temporary_and_exit;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// A sink writing to a file descriptor through a buffer, checking every
+// write. The fault-injection seam: when the environment variable
+// ENTROPY_SIMPLIFY_TEST_FREE_BYTES is set to N, writes fail with ENOSPC once
+// N bytes are written, as on a full disk.
+class File_sink : public Sink
+{
+public:
+  using Sink::write;
+
+  File_sink(int descriptor, std::string name) : descriptor_(descriptor), name_(std::move(name))
+  {
+    buffer_.reserve(capacity);
+    if (const char* free_bytes = std::getenv("ENTROPY_SIMPLIFY_TEST_FREE_BYTES"))
+      free_bytes_ = std::strtoull(free_bytes, nullptr, 10);
+  }
+
+  void write(const char* data, std::size_t size) override
+  {
+    if (size > capacity - buffer_.size())
+      flush();
+    if (size >= capacity)
+      write_all(data, size);
+    else
+      buffer_.insert(buffer_.end(), data, data + size);
+  }
+
+  void flush()
+  {
+    write_all(buffer_.data(), buffer_.size());
+    buffer_.clear();
+  }
+
+private:
+  static constexpr std::size_t capacity = std::size_t(1) << 20;
+
+  void write_all(const char* data, std::size_t size)
+  {
+    while (size > 0)
+    {
+      const std::size_t allowed = (std::min)(size, free_bytes_);
+      const ssize_t written = allowed == 0 ? (errno = ENOSPC, -1) : ::write(descriptor_, data, allowed);
+      if (written < 0 && errno == EINTR)
+        continue;
+      if (written < 0)
+        throw Output_error("cannot write '" + name_ + "': " + safe_output_detail::reason(errno));
+      data += written;
+      size -= std::size_t(written);
+      free_bytes_ -= std::size_t(written);
+    }
+  }
+
+  int descriptor_;
+  std::string name_;
+  std::vector<char> buffer_;
+  std::size_t free_bytes_ = (std::numeric_limits<std::size_t>::max)();
+};
+
+// The output file of a run. Constructing it checks the target and creates
+// the temporary file, so that a run fails before computing anything when it
+// could not write its result; commit() puts the result in place.
+class Safe_output
+{
+public:
+  // Throws Output_error when `path` is the file `input_path` (by device and
+  // inode, links followed), exists and is not a regular file, or when its
+  // folder does not take a new file.
+  Safe_output(const std::string& path, const std::string& input_path)
+    : path_(path), target_(resolve_links(path)), mode_(mode_of_result(target_))
+  {
+    refuse_unsafe_target(input_path);
+    create_temporary();
+  }
+
+  ~Safe_output()
+  {
+    if (descriptor_ >= 0)
+      ::close(descriptor_);
+    if (!committed_)
+      discard_temporary();
+  }
+
+  Safe_output(const Safe_output&) = delete;
+  Safe_output& operator=(const Safe_output&) = delete;
+
+  Sink& sink() { return *sink_; }
+
+  // Writes out what the sink holds, syncs it to the disk, and renames it
+  // over the target, which until then is untouched.
+  void commit()
+  {
+    sink_->flush();
+    if (::fsync(descriptor_) != 0 || ::fchmod(descriptor_, mode_) != 0)
+      throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno));
+    const int descriptor = descriptor_;
+    descriptor_ = -1;
+    if (::close(descriptor) != 0)
+      throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno));
+    {
+      safe_output_detail::Signals_blocked blocked;
+      if (::rename(temporary_.c_str(), target_.c_str()) != 0)
+        throw Output_error("cannot replace '" + path_ + "': " + safe_output_detail::reason(errno));
+      safe_output_detail::has_pending_temporary = 0;
+      committed_ = true;
+    }
+    sync_folder();
+  }
+
+private:
+  static std::string folder_of(const std::string& path)
+  {
+    const std::size_t slash = path.rfind('/');
+    return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  }
+
+  // A symbolic link is written through, to the file it names.
+  static std::string resolve_links(const std::string& path)
+  {
+    struct stat link;
+    if (::lstat(path.c_str(), &link) != 0 || !S_ISLNK(link.st_mode))
+      return path;
+    char resolved[PATH_MAX];
+    if (::realpath(path.c_str(), resolved) == nullptr)
+      throw Output_error("cannot write '" + path + "': it is a symbolic link to a missing file (" +
+                         safe_output_detail::reason(errno) + ")");
+    return resolved;
+  }
+
+  // A replaced file keeps its permissions; a new one gets the umask's.
+  static mode_t mode_of_result(const std::string& target)
+  {
+    struct stat existing;
+    if (::stat(target.c_str(), &existing) == 0)
+      return existing.st_mode & 07777;
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return 0666 & ~mask;
+  }
+
+  void refuse_unsafe_target(const std::string& input_path) const
+  {
+    struct stat output, input;
+    if (::stat(target_.c_str(), &output) != 0)
+      return;
+    if (S_ISDIR(output.st_mode))
+      throw Output_error("cannot write '" + path_ + "': it is a folder; give a file name");
+    if (!S_ISREG(output.st_mode))
+      throw Output_error("cannot write '" + path_ + "': it exists and is not a regular file (a device, a pipe "
+                         "or a socket); give the name of a file");
+    if (::stat(input_path.c_str(), &input) == 0 && input.st_dev == output.st_dev && input.st_ino == output.st_ino)
+      throw Output_error("refusing to write '" + path_ + "': it is the input file '" + input_path +
+                         "' (or a link to it), which would be lost; give another output file");
+  }
+
+  void create_temporary()
+  {
+    const std::string folder = folder_of(target_);
+    const std::string name = target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1);
+    std::string pattern = folder + "/." + name + ".XXXXXX";
+    if (pattern.size() >= PATH_MAX)
+      throw Output_error("cannot write '" + path_ + "': the path is too long");
+    safe_output_detail::Signals_blocked blocked;
+    descriptor_ = ::mkstemp(pattern.data());
+    if (descriptor_ < 0)
+      throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno) +
+                         " (creating a file in '" + folder + "')");
+    temporary_ = pattern;
+    std::memcpy(safe_output_detail::pending_temporary, pattern.c_str(), pattern.size() + 1);
+    safe_output_detail::has_pending_temporary = 1;
+    sink_.reset(new File_sink(descriptor_, path_));
+  }
+
+  void discard_temporary()
+  {
+    if (temporary_.empty())
+      return;
+    safe_output_detail::Signals_blocked blocked;
+    ::unlink(temporary_.c_str());
+    safe_output_detail::has_pending_temporary = 0;
+  }
+
+  // The rename is durable once the folder is synced; the file itself is
+  // complete either way, so a failure here loses nothing.
+  void sync_folder() const
+  {
+    const int folder = ::open(folder_of(target_).c_str(), O_RDONLY | O_DIRECTORY);
+    if (folder >= 0)
+    {
+      ::fsync(folder);
+      ::close(folder);
+    }
+  }
+
+  std::string path_, target_, temporary_;
+  mode_t mode_;
+  int descriptor_ = -1;
+  bool committed_ = false;
+  std::unique_ptr<File_sink> sink_;
+};
+
+} // namespace entropy_simplify
+
+#endif // ENTROPY_SIMPLIFY_SAFE_OUTPUT_H

@@ -1,0 +1,244 @@
+// Tests of the program's parts other than PLY and LAS (which have their own
+// files): the XYZ and OFF formats, the safe output, the choice of format, and
+// the simplification of a read cloud, georeferenced LAS included.
+
+#include <catch2/catch.hpp>
+
+#include "input_file.h"
+#include "point_files.h"
+#include "safe_output.h"
+#include "simplify_cloud.h"
+
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace es = entropy_simplify;
+
+namespace {
+
+std::string cli_input(const std::string& name) { return std::string(ES_CLI_INPUTS_DIR) + "/" + name; }
+
+std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+// A fresh, empty folder for one test.
+std::string fresh_folder(const std::string& name)
+{
+  const std::string folder = "program_test_" + name;
+  std::system(("rm -rf '" + folder + "' && mkdir -p '" + folder + "'").c_str());
+  return folder;
+}
+
+std::size_t hidden_files_in(const std::string& folder)
+{
+  const std::string listing = folder + "/listing";
+  std::system(("ls -A '" + folder + "' | grep -c '^\\.' > '" + listing + "'").c_str());
+  return std::stoul(file_text(listing));
+}
+
+es::Settings count_settings(std::size_t count, CGAL::Entropy_simplification::Mode mode)
+{
+  es::Settings s;
+  s.count = count;
+  s.options.mode = mode;
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("XYZ: 3 or 6 numbers a line, comments and blank lines skipped, exact round trip", "[program][xyz]")
+{
+  const es::Point_table t = es::read_xyz("# a comment\n1 2 3 0 0 1\n\n  -4.5\t5e-300 +6 0 1 0\r\n");
+  REQUIRE(t.size() == 2);
+  REQUIRE(t.columns.size() == 6);
+  CHECK(t.columns[0].values == std::vector<double>{ 1., -4.5 });
+  CHECK(t.columns[1].values == std::vector<double>{ 2., 5e-300 });
+  CHECK(t.find("nz")->values == std::vector<double>{ 1., 0. });
+
+  es::Point_table extremes;
+  for (const char* name : { "x", "y", "z" })
+    extremes.column(name, es::Scalar_type::float64).values = {
+      0.1, -0.0, 1e308, 4.9e-324, 123456789.123456789, -2.2250738585072014e-308 };
+  es::String_sink out;
+  es::write_xyz(out, extremes);
+  const es::Point_table back = es::read_xyz(out.bytes);
+  for (std::size_t c = 0; c < 3; ++c)
+    CHECK(back.columns[c].values == extremes.columns[c].values);
+  CHECK(out.bytes.find("0.1 0.1 0.1\n") == 0);
+}
+
+TEST_CASE("XYZ: a line of another length is an error naming the line", "[program][xyz]")
+{
+  CHECK_THROWS_WITH(es::read_xyz("1 2 3\n4 5\n"), Catch::Contains("line 2 holds 2 numbers"));
+  CHECK_THROWS_WITH(es::read_xyz("1 2 3 4\n"), Catch::Contains("line 1 holds 4 numbers; XYZ lines hold 3 or 6"));
+  CHECK_THROWS_WITH(es::read_xyz("1 2 3 4 5 6 7\n"), Catch::Contains("line 1: an XYZ line holds 3 or 6 numbers"));
+  CHECK_THROWS_WITH(es::read_xyz("1 2 x\n"), Catch::Contains("line 1: an XYZ line holds 3 or 6"));
+  CHECK_THROWS_WITH(es::read_xyz("1 2 3\n1 2 3 # no comments after numbers\n"), Catch::Contains("line 2"));
+  CHECK(es::read_xyz("\n# nothing\n").size() == 0);
+}
+
+TEST_CASE("OFF: OFF and NOFF vertices, faces dropped with a note, counts checked", "[program][off]")
+{
+  const es::Off_cloud off = es::read_off("OFF # a mesh\n# comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  CHECK(off.table.size() == 3);
+  CHECK(off.table.find("x")->values == std::vector<double>{ 0., 1., 0. });
+  REQUIRE(off.notes.size() == 1);
+  CHECK(off.notes[0] == "1 faces dropped: a simplified point set has no faces");
+
+  const es::Off_cloud noff = es::read_off("NOFF 2 0 0\n0 0 0 0 0 1\n1 1 1 0 1 0\n");
+  CHECK(noff.table.find("ny")->values == std::vector<double>{ 0., 1. });
+
+  CHECK_THROWS_WITH(es::read_off("OFF\n4000000000 0 0\n0 0 0\n"), Catch::Contains("claims 4000000000 vertices"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n3 0 0\n0 0 0\n1 1 1\n"), Catch::Contains("truncated"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n-3 0 0\n"), Catch::Contains("vertex count is not a count"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n99999999999999999999999 0 0\n"), Catch::Contains("not a count"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n1 0\n"), Catch::Contains("needs 3 counts"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n1 0 0\n0 0\n"), Catch::Contains("line 3 holds 2 values"));
+  CHECK_THROWS_WITH(es::read_off("4OFF\n"), Catch::Contains("other OFF variants"));
+
+  es::String_sink out;
+  es::write_off(out, noff.table);
+  CHECK(out.bytes == "OFF\n2 0 0\n0 0 0\n1 1 1\n");
+}
+
+TEST_CASE("The format is the extension's, in any case; LAZ says how to convert", "[program]")
+{
+  CHECK(es::format_of("a/b.PLY") == es::Format::ply);
+  CHECK(es::format_of("scan.pwn") == es::Format::xyz);
+  CHECK(es::format_of("x.Las") == es::Format::las);
+  CHECK_THROWS_WITH(es::format_of("scan.laz"), Catch::Contains("laszip"));
+  CHECK_THROWS_AS(es::format_of("folder.ply/scan"), es::Usage_error);
+  CHECK_THROWS_AS(es::format_of("scan.txt"), es::Usage_error);
+}
+
+TEST_CASE("Safe output: the target changes only on commit, and never partly", "[program][safe output]")
+{
+  const std::string folder = fresh_folder("safe_output");
+  const std::string target = folder + "/out.xyz", input = folder + "/in.xyz";
+  write_text(target, "old\n");
+  write_text(input, "1 2 3\n");
+  ::chmod(target.c_str(), 0640);
+
+  SECTION("committed: the new content, the old permissions, no temporary file")
+  {
+    es::Safe_output output(target, input);
+    CHECK(hidden_files_in(folder) == 1); // the temporary file, from the start
+    output.sink().write("new\n");
+    CHECK(file_text(target) == "old\n");
+    output.commit();
+    CHECK(file_text(target) == "new\n");
+    struct stat status;
+    ::stat(target.c_str(), &status);
+    CHECK((status.st_mode & 0777) == 0640);
+    CHECK(hidden_files_in(folder) == 0);
+  }
+  SECTION("abandoned (an exception, a failure): the target untouched, no temporary file")
+  {
+    {
+      es::Safe_output output(target, input);
+      output.sink().write(std::string(3 << 20, 'x'));
+    }
+    CHECK(file_text(target) == "old\n");
+    CHECK(hidden_files_in(folder) == 0);
+  }
+  SECTION("a full disk: the write fails, with the reason")
+  {
+    ::setenv("ENTROPY_SIMPLIFY_TEST_FREE_BYTES", "100", 1);
+    {
+      es::Safe_output output(target, input);
+      ::unsetenv("ENTROPY_SIMPLIFY_TEST_FREE_BYTES");
+      output.sink().write(std::string(99, 'x'));
+      output.sink().write("y\n");
+      CHECK_THROWS_WITH(output.commit(), Catch::Contains("out.xyz': No space left on device"));
+    }
+    CHECK(file_text(target) == "old\n");
+    CHECK(hidden_files_in(folder) == 0);
+  }
+  SECTION("the input, a folder or a missing folder are refused before anything is written")
+  {
+    CHECK_THROWS_WITH(es::Safe_output(input, input), Catch::Contains("is the input file"));
+    CHECK_THROWS_WITH(es::Safe_output(folder, input), Catch::Contains("is a folder"));
+    CHECK_THROWS_WITH(es::Safe_output(folder + "/none/x.ply", input), Catch::Contains("No such file or directory"));
+    CHECK(file_text(input) == "1 2 3\n");
+    CHECK(hidden_files_in(folder) == 0);
+  }
+}
+
+TEST_CASE("The program's simplification: exact count, kept rows in order, sequential = parallel",
+          "[program][simplify]")
+{
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  REQUIRE(cloud.size() == 144);
+  for (auto mode : { CGAL::Entropy_simplification::Mode::weighted_elimination,
+                     CGAL::Entropy_simplification::Mode::paper })
+  {
+    std::vector<std::array<double, 3> > normals;
+    const es::Settings s = count_settings(37, mode);
+    const std::vector<std::size_t> sequential =
+      es::simplify_cloud<CGAL::Sequential_tag>(cloud, s, std::function<bool(double)>(), normals);
+    const std::vector<std::size_t> parallel =
+      es::simplify_cloud<CGAL::Parallel_if_available_tag>(cloud, s, std::function<bool(double)>(), normals);
+    CHECK(sequential.size() == 37);
+    CHECK(std::is_sorted(sequential.begin(), sequential.end()));
+    CHECK(std::adjacent_find(sequential.begin(), sequential.end()) == sequential.end());
+    CHECK(sequential.back() < 144);
+    CHECK(sequential == parallel);
+  }
+}
+
+TEST_CASE("Georeferenced LAS: the same integer records with other offsets keep the same points",
+          "[program][las]")
+{
+  es::Input_file local_file(cli_input("grid.las")), georeferenced_file(cli_input("grid_georeferenced.las"));
+  const es::Cloud local = es::read_cloud(local_file.bytes(), es::Format::las);
+  const es::Cloud georeferenced = es::read_cloud(georeferenced_file.bytes(), es::Format::las);
+  REQUIRE(georeferenced.las->offset[0] == 512345.67);
+  REQUIRE(local.las->offset[0] == 0.);
+  for (auto mode : { CGAL::Entropy_simplification::Mode::weighted_elimination,
+                     CGAL::Entropy_simplification::Mode::paper })
+  {
+    std::vector<std::array<double, 3> > normals;
+    const es::Settings s = count_settings(40, mode);
+    const std::vector<std::size_t> a =
+      es::simplify_cloud<CGAL::Sequential_tag>(local, s, std::function<bool(double)>(), normals);
+    const std::vector<std::size_t> b =
+      es::simplify_cloud<CGAL::Sequential_tag>(georeferenced, s, std::function<bool(double)>(), normals);
+    CHECK(a.size() == 40);
+    CHECK(a == b);
+
+    // and the written records are the same bytes
+    es::String_sink out_a, out_b;
+    es::write_las(out_a, *local.las, a);
+    es::write_las(out_b, *georeferenced.las, b);
+    const std::size_t start = local.las->offset_to_points;
+    CHECK(out_a.bytes.size() == out_b.bytes.size());
+    CHECK(out_a.bytes.substr(start) == out_b.bytes.substr(start));
+  }
+}
+
+TEST_CASE("read_cloud: empty files, no points and non-finite coordinates are errors", "[program]")
+{
+  CHECK_THROWS_WITH(es::read_cloud("", es::Format::ply), Catch::Equals("the file is empty"));
+  CHECK_THROWS_WITH(es::read_cloud("# only a comment\n", es::Format::xyz), Catch::Equals("the file holds no points"));
+  CHECK_THROWS_WITH(es::read_cloud("OFF 0 0 0\n", es::Format::off), Catch::Equals("the file holds no points"));
+  CHECK_THROWS_WITH(es::read_cloud("1 2 3\n1 inf 3\n", es::Format::xyz),
+                    Catch::Equals("point #1 has a coordinate that is not a finite number"));
+  CHECK_THROWS_WITH(es::read_cloud("-nan 2 3\n", es::Format::xyz), Catch::Contains("point #0"));
+  // a non-finite normal is a property like any other, kept as read
+  CHECK(es::read_cloud("1 2 3 nan 0 1\n", es::Format::xyz).size() == 1);
+}
