@@ -103,11 +103,14 @@ TEST_CASE("OFF: OFF and NOFF vertices, faces dropped with a note, counts checked
   CHECK(noff.table.find("ny")->values == std::vector<double>{ 0., 1. });
 
   CHECK_THROWS_WITH(es::read_off("OFF\n4000000000 0 0\n0 0 0\n"), Catch::Contains("claims 4000000000 vertices"));
-  CHECK_THROWS_WITH(es::read_off("OFF\n3 0 0\n0 0 0\n1 1 1\n"), Catch::Contains("truncated"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n3 0 0\n0 0 0\n1 1 1\n# room for a third vertex\n"),
+                    Catch::Contains("the file is truncated: it ends after 2 of 3 vertices"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n3 0 0\n0 0 0\n1 1 1\n"), Catch::Contains("claims 3 vertices"));
+  CHECK(es::read_off("OFF\n2 0 0\n0 0 0\n1 1 1").table.size() == 2);
   CHECK_THROWS_WITH(es::read_off("OFF\n-3 0 0\n"), Catch::Contains("vertex count is not a count"));
   CHECK_THROWS_WITH(es::read_off("OFF\n99999999999999999999999 0 0\n"), Catch::Contains("not a count"));
   CHECK_THROWS_WITH(es::read_off("OFF\n1 0\n"), Catch::Contains("needs 3 counts"));
-  CHECK_THROWS_WITH(es::read_off("OFF\n1 0 0\n0 0\n"), Catch::Contains("line 3 holds 2 values"));
+  CHECK_THROWS_WITH(es::read_off("OFF\n1 0 0\n0 0\n# padding\n"), Catch::Contains("line 3 holds 2 values"));
   CHECK_THROWS_WITH(es::read_off("4OFF\n"), Catch::Contains("other OFF variants"));
 
   es::String_sink out;
@@ -241,4 +244,23 @@ TEST_CASE("read_cloud: empty files, no points and non-finite coordinates are err
   CHECK_THROWS_WITH(es::read_cloud("-nan 2 3\n", es::Format::xyz), Catch::Contains("point #0"));
   // a non-finite normal is a property like any other, kept as read
   CHECK(es::read_cloud("1 2 3 nan 0 1\n", es::Format::xyz).size() == 1);
+}
+
+TEST_CASE("Numbers as text: signs, extremes, and what is not a number", "[program]")
+{
+  double v = 0.;
+  CHECK((es::parse_number("+1.5", v) && v == 1.5));
+  CHECK((es::parse_number("-2e3", v) && v == -2000.));
+  CHECK((es::parse_number("1e-400", v) && v == 0.));
+  CHECK((es::parse_number("-1e400", v) && v == -std::numeric_limits<double>::infinity()));
+  CHECK((es::parse_number("4.9e-324", v) && v == 4.9e-324));
+  for (const char* bad : { "", "+", "-", "+-1", "-+1", "++1", "1,5", "0x10", "1e", " 1", "1 " })
+    CHECK_FALSE(es::parse_number(bad, v));
+  // holds() decides by range before converting, so NaN and huge values are simply not integers
+  CHECK_FALSE(es::holds(es::Scalar_type::int8, std::numeric_limits<double>::quiet_NaN()));
+  CHECK_FALSE(es::holds(es::Scalar_type::uint32, 1e300));
+  CHECK_FALSE(es::holds(es::Scalar_type::int32, -1e19));
+  CHECK(es::holds(es::Scalar_type::uint32, 4294967295.));
+  CHECK_FALSE(es::holds(es::Scalar_type::uint32, 4294967296.));
+  CHECK_FALSE(es::holds(es::Scalar_type::int16, 1.5));
 }

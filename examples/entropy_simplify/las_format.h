@@ -310,8 +310,9 @@ inline void patch_bounds(std::string& header, const Las_file& las, const std::ve
   }
 }
 
-// The waveform data (1.3) and the EVLRs (1.4) move with the end of the point
-// data. A zero offset (none), or one not past the points, means nothing there.
+// The waveform data (1.3) and the EVLRs (1.4) follow the point data and move
+// with its end. An offset before that end (0 for none) points at nothing that
+// moves, and stays.
 inline void patch_offsets(std::string& header, const Las_file& las, std::size_t kept)
 {
   const std::uint64_t old_end = points_end(las), new_end = las.offset_to_points + kept * las.record_length;

@@ -66,9 +66,10 @@ inline Off_cloud read_off(std::string_view bytes)
                      ": the OFF header needs 3 counts (vertices, faces, edges)");
   const std::size_t vertices = off_detail::parse_count(tokens[0], "vertex count");
   const std::size_t faces = off_detail::parse_count(tokens[1], "face count");
-  // "0 0 0\n" is the shortest vertex line: a larger count cannot be true
+  // "0 0 0\n" is the shortest vertex line (the last needs no '\n'): a
+  // larger count cannot be true
   const std::size_t width = normals ? 6 : 3;
-  if (vertices > (bytes.size() - reader.position()) / (2 * width))
+  if (vertices > (bytes.size() - reader.position() + 1) / (2 * width))
     throw Read_error("the OFF header claims " + std::to_string(vertices) + " vertices, more than the " +
                      std::to_string(bytes.size() - reader.position()) + " bytes after it can hold");
 

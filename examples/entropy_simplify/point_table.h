@@ -43,15 +43,18 @@ inline bool is_integral(Scalar_type type)
 // floating types, any double (a float column may hold what a float rounds to).
 inline bool holds(Scalar_type type, double value)
 {
+  // the range first: converting NaN or a value beyond int64 is undefined
+  const auto integer_within = [value](double low, double high) {
+    return value >= low && value <= high && value == double(std::int64_t(value));
+  };
   switch (type)
   {
-  case Scalar_type::int8: return value == double(std::int64_t(value)) && value >= -128. && value <= 127.;
-  case Scalar_type::uint8: return value == double(std::int64_t(value)) && value >= 0. && value <= 255.;
-  case Scalar_type::int16: return value == double(std::int64_t(value)) && value >= -32768. && value <= 32767.;
-  case Scalar_type::uint16: return value == double(std::int64_t(value)) && value >= 0. && value <= 65535.;
-  case Scalar_type::int32:
-    return value == double(std::int64_t(value)) && value >= -2147483648. && value <= 2147483647.;
-  case Scalar_type::uint32: return value == double(std::int64_t(value)) && value >= 0. && value <= 4294967295.;
+  case Scalar_type::int8: return integer_within(-128., 127.);
+  case Scalar_type::uint8: return integer_within(0., 255.);
+  case Scalar_type::int16: return integer_within(-32768., 32767.);
+  case Scalar_type::uint16: return integer_within(0., 65535.);
+  case Scalar_type::int32: return integer_within(-2147483648., 2147483647.);
+  case Scalar_type::uint32: return integer_within(0., 4294967295.);
   case Scalar_type::float32:
   case Scalar_type::float64: return true;
   }

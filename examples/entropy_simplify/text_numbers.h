@@ -8,6 +8,7 @@
 #include "point_table.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -16,15 +17,22 @@
 namespace entropy_simplify {
 
 // The whole of `token` as a number (a leading '+' allowed; "nan" and "inf"
-// are numbers, which callers check); false when it is not one.
+// are numbers, which callers check); false when it is not one. A magnitude
+// beyond a double's range reads as infinite or zero, as strtod reads it.
 inline bool parse_number(std::string_view token, double& value)
 {
-  if (!token.empty() && token.front() == '+')
+  const bool plus = !token.empty() && token.front() == '+';
+  if (plus)
     token.remove_prefix(1);
-  if (token.empty() || token.front() == '+' || (token.front() == '-' && token.size() > 1 && token[1] == '+'))
+  // from_chars takes no '+', and no second sign follows a first
+  if (token.empty() || token.front() == '+' || (plus && token.front() == '-'))
     return false;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return error == std::errc() && end == token.data() + token.size();
+  if (end != token.data() + token.size())
+    return false;
+  if (error == std::errc::result_out_of_range)
+    value = std::strtod(std::string(token).c_str(), nullptr);
+  return error == std::errc() || error == std::errc::result_out_of_range;
 }
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
