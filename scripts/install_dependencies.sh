@@ -13,4 +13,4 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   ca-certificates cmake make g++ \
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev libcli11-dev \
   catch2 doxygen libcgal-demo gnuplot-nox \
-  clang libclang-rt-14-dev bsdutils cloudcompare xvfb xauth >/dev/null
+  python3 clang libclang-rt-14-dev bsdutils cloudcompare xvfb xauth >/dev/null

@@ -92,9 +92,11 @@ inline void remove_output_on_interrupt()
 }
 
 // A sink writing to a file descriptor through a buffer, checking every
-// write. The fault-injection seam: when the environment variable
-// ENTROPY_SIMPLIFY_TEST_FREE_BYTES is set to N, writes fail with ENOSPC once
-// N bytes are written, as on a full disk.
+// write. The fault-injection seams, for the tests: when the environment
+// variable ENTROPY_SIMPLIFY_TEST_FREE_BYTES is N, writes fail with ENOSPC
+// once N bytes are written, as on a full disk; when
+// ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES is N, the program stops for good
+// once N bytes are written, as on a stuck disk, to be interrupted there.
 class File_sink : public Sink
 {
 public:
@@ -105,6 +107,8 @@ public:
     buffer_.reserve(capacity);
     if (const char* free_bytes = std::getenv("ENTROPY_SIMPLIFY_TEST_FREE_BYTES"))
       free_bytes_ = std::strtoull(free_bytes, nullptr, 10);
+    if (const char* stall = std::getenv("ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES"))
+      stall_after_ = std::strtoull(stall, nullptr, 10);
   }
 
   void write(const char* data, std::size_t size) override
@@ -139,6 +143,9 @@ private:
       data += written;
       size -= std::size_t(written);
       free_bytes_ -= std::size_t(written);
+      written_ += std::size_t(written);
+      while (written_ >= stall_after_)
+        ::pause();
     }
   }
 
@@ -146,6 +153,8 @@ private:
   std::string name_;
   std::vector<char> buffer_;
   std::size_t free_bytes_ = (std::numeric_limits<std::size_t>::max)();
+  std::size_t stall_after_ = (std::numeric_limits<std::size_t>::max)();
+  std::size_t written_ = 0;
 };
 
 // The output file of a run. Constructing it checks the target and creates

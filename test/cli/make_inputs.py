@@ -61,6 +61,40 @@ def las(points, version=(1, 2), point_format=0, count=None, signature=b"LASF", s
     return bytes(h) + vlr + bytes(body)
 
 
+def las14(points, point_format, vlrs=b"", evlr=b""):
+    """A LAS 1.4 file of `points` in point format 6 or 10, with VLRs and one EVLR after the points."""
+    record_length = {6: 30, 10: 67}[point_format]
+    scale, offset_to_points = 0.001, 375 + len(vlrs)
+    h = bytearray(375)
+    h[0:4] = b"LASF"
+    h[24], h[25] = 1, 4
+    h[26:58] = b"make_inputs.py".ljust(32, b"\0")
+    struct.pack_into("<HII", h, 94, 375, offset_to_points, vlrs.count(b"entropy_tests"))
+    h[104] = point_format
+    struct.pack_into("<H", h, 105, record_length)
+    struct.pack_into("<3d3d", h, 131, scale, scale, scale, 500000., 4000000., 100.)
+    body = bytearray()
+    returns = [0] * 15
+    for i, p in enumerate(points):
+        r = bytearray(record_length)
+        ret, n_ret = 1 + i % 3, 3
+        returns[ret - 1] += 1
+        struct.pack_into("<3iHBBBBhHd", r, 0, *(round(c / scale) for c in p), 1000 + i, ret | (n_ret << 4), 0x01,
+                         6, 9, -300, 42, 1000.5 + i)
+        if point_format == 10:
+            struct.pack_into("<4H", r, 30, i, 2 * i, 3 * i, 4 * i)
+        body += r
+    xs, ys, zs = ([q[c] for q in points] for c in range(3))
+    struct.pack_into("<6d", h, 179, max(xs) + 500000., min(xs) + 500000., max(ys) + 4000000., min(ys) + 4000000.,
+                     max(zs) + 100., min(zs) + 100.)
+    struct.pack_into("<QIQ15Q", h, 235, offset_to_points + len(body), 1 if evlr else 0, len(points), *returns)
+    return bytes(h) + vlrs + bytes(body) + evlr
+
+
+def evlr(user, record_id, payload):
+    return struct.pack("<H16sHQ32s", 0, user, record_id, len(payload), b"an extended record") + payload
+
+
 def vlr(user, record_id, payload):
     return struct.pack("<H16sHH32s", 0, user, record_id, len(payload), b"a test record") + payload
 
@@ -84,6 +118,11 @@ def main():
     write("integer_xyz_binary.ply", ply_header("binary_little_endian", len(points), ints).encode() +
           b"".join(struct.pack("<3i", round(p[0] * 100), round(p[1] * 100), round(p[2] * 100)) for p in points))
     write("grid.las", las(points, vlr=vlr(b"entropy_tests", 7, b"payload bytes")))
+    write("grid_1_4_format_6.las", las14(points, 6, vlr(b"entropy_tests", 1, b"first VLR") +
+                                         vlr(b"entropy_tests", 2, b"second VLR"),
+                                         evlr(b"entropy_tests", 3, b"EVLR payload after the points")))
+    write("grid_1_4_format_10.las", las14(points, 10, vlr(b"entropy_tests", 1, b"a VLR"),
+                                          evlr(b"entropy_tests", 4, b"waveform-like EVLR payload")))
     # the same integer records, georeferenced: only the header's offsets differ
     write("grid_georeferenced.las", las(points, offset=(512345.67, 4123456.78, 250.), vlr=vlr(b"entropy_tests", 7,
                                                                                               b"payload bytes")))
@@ -125,7 +164,8 @@ def main():
 
     # seeds of the fuzzer's corpus: one small valid file per reader, its first byte naming the reader
     for name in ("grid.xyz", "grid.off", "grid_ascii.ply", "grid_binary.ply", "grid_big_endian.ply",
-                 "integer_xyz_binary.ply", "grid.las", "huge_list_count.ply"):
+                 "integer_xyz_binary.ply", "grid.las", "grid_1_4_format_6.las", "grid_1_4_format_10.las",
+                 "huge_list_count.ply"):
         with open(os.path.join(INPUTS, name), "rb") as f:
             data = f.read()
         kind = {"xyz": b"x", "off": b"o", "ply": b"p", "las": b"l"}[name.rsplit(".", 1)[1]]
