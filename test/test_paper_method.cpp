@@ -256,6 +256,24 @@ TEST_CASE("The rounding of a percentage", "[guarantees]")
   CHECK_THROWS_AS(kept_count_from_percentage(10, 0.), std::invalid_argument);
   CHECK_THROWS_AS(kept_count_from_percentage(10, 100.5), std::invalid_argument);
   CHECK_THROWS_AS(kept_count_from_percentage(10, std::nan("")), std::invalid_argument);
+  // a product within 1e-9 of 0 keeps one point, not none
+  CHECK(kept_count_from_percentage(200, 1e-13) == 1);
+  CHECK(kept_count_from_percentage(100000, 4.9e-324) == 1);
+  CHECK(kept_count_from_percentage(0, 50.) == 0);
+}
+
+TEST_CASE("A tiny percentage keeps one point in the default mode, and is an error in the paper's", "[guarantees]")
+{
+  const std::vector<Point> points = test_clouds::wavy_surface(300, 0.005, 3).points;
+  std::vector<Point> copy = points;
+  const auto first_removed = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+    copy, 10, CGAL::parameters::select_percentage(1e-13));
+  CHECK(std::distance(copy.begin(), first_removed) == 1);
+  copy = points;
+  CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+                      copy, 10, CGAL::parameters::select_percentage(1e-13), paper_mode()),
+                    Catch::Contains("must keep at least k + 1 = 11 points") && Catch::Contains("1 were asked"));
+  CHECK(copy == points);
 }
 
 TEST_CASE("The removed points come last removed first: every prefix is a simplification", "[guarantees]")

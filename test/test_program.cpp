@@ -83,6 +83,11 @@ TEST_CASE("XYZ: 3 or 6 numbers a line, comments and blank lines skipped, exact r
 
 TEST_CASE("XYZ: a line of another length is an error naming the line", "[program][xyz]")
 {
+  // CR alone ends a line too (old Mac files): never two points read as one with a normal
+  CHECK(es::read_xyz("1 2 3\r4 5 6\n").size() == 2);
+  CHECK(es::read_xyz("1 2 3\r\n4 5 6\r7 8 9").size() == 3);
+  // what the file holds is shown, but not its unprintable bytes
+  CHECK_THROWS_WITH(es::read_xyz(std::string("1 2 \0\x01\n", 7)), Catch::Contains("got '1 2 ?" "?'"));
   CHECK_THROWS_WITH(es::read_xyz("1 2 3\n4 5\n"), Catch::Contains("line 2 holds 2 numbers"));
   CHECK_THROWS_WITH(es::read_xyz("1 2 3 4\n"), Catch::Contains("line 1 holds 4 numbers; XYZ lines hold 3 or 6"));
   CHECK_THROWS_WITH(es::read_xyz("1 2 3 4 5 6 7\n"), Catch::Contains("line 1: an XYZ line holds 3 or 6 numbers"));
@@ -97,7 +102,7 @@ TEST_CASE("OFF: OFF and NOFF vertices, faces dropped with a note, counts checked
   CHECK(off.table.size() == 3);
   CHECK(off.table.find("x")->values == std::vector<double>{ 0., 1., 0. });
   REQUIRE(off.notes.size() == 1);
-  CHECK(off.notes[0] == "1 faces dropped: a simplified point set has no faces");
+  CHECK(off.notes[0] == "1 face dropped: a simplified point set has no faces");
 
   const es::Off_cloud noff = es::read_off("NOFF 2 0 0\n0 0 0 0 0 1\n1 1 1 0 1 0\n");
   CHECK(noff.table.find("ny")->values == std::vector<double>{ 0., 1. });

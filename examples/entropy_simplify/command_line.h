@@ -58,7 +58,7 @@ inline const char* examples_text()
          "  laszip -i scan.laz -o scan.las   or   pdal translate scan.laz scan.las\n"
          "\n"
          "Exit codes: 0 done; 1 failure (the output is left untouched); 2 usage error;\n"
-         "130 interrupted by SIGINT or SIGTERM (the output is left untouched).";
+         "130 interrupted by SIGINT, SIGTERM or SIGHUP (the output is left untouched).";
 }
 
 namespace command_line_detail {
@@ -163,7 +163,7 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   app.add_option("--count", count, "keep N points (all of them if N exceeds the input)")->type_name("N");
   app.add_option("-k", k, "neighbours per point (default 10; 2-1000, 5-1000 with --normals jet)")->type_name("K");
   app.add_option("--mode", mode, "default | paper: weighted elimination with denser features (default), "
-                                 "or the paper's method")->type_name("M");
+                                 "or the paper's method, which keeps at least k + 1 points")->type_name("M");
   app.add_option("--feature-weight", feature_weight, "default mode: features keep up to 1 + W times the "
                                                      "density of flat regions (default 3; 0: no entropy term)")
     ->type_name("W");

@@ -66,7 +66,7 @@ int run(int argc, char** argv)
   const Format in = format_of(s.input), out = format_of(s.output);
   check_formats(s, in, out);
 
-  remove_output_on_interrupt();
+  remove_output_on_signals();
   std::unique_ptr<Input_file> input;
   try
   {

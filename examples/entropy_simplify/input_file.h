@@ -25,7 +25,8 @@ public:
   // opened or is not a regular file.
   explicit Input_file(const std::string& path)
   {
-    const int descriptor = ::open(path.c_str(), O_RDONLY);
+    // O_NONBLOCK: opening a FIFO would otherwise wait for a writer
+    const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK);
     if (descriptor < 0)
       throw Read_error(std::strerror(errno));
     struct stat status;

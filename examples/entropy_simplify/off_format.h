@@ -42,7 +42,7 @@ inline std::size_t parse_count(std::string_view token, const char* what)
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), count);
   if (error != std::errc() || end != token.data() + token.size())
     throw Read_error(std::string("the OFF header's ") + what + " is not a count: '" +
-                     std::string(token.substr(0, 40)) + "'");
+                     excerpt(token, 40) + "'");
   return count;
 }
 
@@ -91,12 +91,13 @@ inline Off_cloud read_off(std::string_view bytes)
       double value;
       if (!parse_number(tokens[c], value))
         throw Read_error("line " + std::to_string(reader.line_number()) + ": '" +
-                         std::string(tokens[c].substr(0, 40)) + "' is not a number");
+                         excerpt(tokens[c], 40) + "' is not a number");
       cloud.table.columns[c].values.push_back(value);
     }
   }
   if (faces > 0)
-    cloud.notes.push_back(std::to_string(faces) + " faces dropped: a simplified point set has no faces");
+    cloud.notes.push_back(std::to_string(faces) + (faces == 1 ? " face" : " faces") +
+                          " dropped: a simplified point set has no faces");
   return cloud;
 }
 

@@ -80,7 +80,7 @@ struct Header
 [[noreturn]] inline void throw_header_error(const Text_reader& reader, std::string_view line, const std::string& what)
 {
   throw Read_error("PLY header line " + std::to_string(reader.line_number()) + " '" +
-                   std::string(line.substr(0, 80)) + "': " + what);
+                   excerpt(line, 80) + "': " + what);
 }
 
 // A header line's first tokens; seven are enough to know that a line has too many.
@@ -312,9 +312,9 @@ inline double next_ascii_value(const Text_reader& reader, std::string_view& line
   double value;
   if (!parse_number(token, value))
     throw Read_error(at_line(reader) + "property '" + property.name + "' is not a number: '" +
-                     std::string(token.substr(0, 40)) + "'");
+                     excerpt(token, 40) + "'");
   if (!convert_to(type, token, value))
-    throw Read_error(at_line(reader) + std::string(token.substr(0, 40)) + " does not fit property '" +
+    throw Read_error(at_line(reader) + excerpt(token, 40) + " does not fit property '" +
                      property.name + "' of type " + type_name(type));
   return value;
 }
@@ -354,7 +354,7 @@ inline void read_ascii_vertices(Text_reader& reader, const Element& vertex, Poin
       else
         table.columns[column++].values.push_back(next_ascii_value(reader, line, property, property.type));
     if (next_token_of_line(line, token))
-      throw Read_error(at_line(reader) + "a vertex has too many values: '" + std::string(token.substr(0, 40)) +
+      throw Read_error(at_line(reader) + "a vertex has too many values: '" + excerpt(token, 40) +
                        "' follows its last property");
   }
 }

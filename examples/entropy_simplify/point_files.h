@@ -10,6 +10,8 @@
 #include "ply_format.h"
 #include "xyz_format.h"
 
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -57,6 +59,17 @@ struct Cloud
 
 namespace point_files_detail {
 
+// A LAS file's coordinates are X * scale + offset, X a 32-bit integer: the
+// header tells whether some could exceed what the package processes.
+inline void check_las_range(const Las_file& las)
+{
+  const double limit = CGAL::Entropy_simplification::internal::largest_coordinate;
+  for (int c = 0; c < 3; ++c)
+    if (std::abs(las.offset[c]) + 2147483648. * std::abs(las.scale[c]) > limit)
+      throw Read_error(std::string("the header's ") + "XYZ"[c] + " scale and offset allow coordinates beyond 1e150 "
+                       "in magnitude, which the program does not process");
+}
+
 // Non-finite coordinates are an error of the file, reported with the point.
 inline void check_coordinates(const Point_table& table)
 {
@@ -98,7 +111,9 @@ inline Cloud read_cloud(std::string_view bytes, Format format)
   }
   if (cloud.size() == 0)
     throw Read_error("the file holds no points");
-  if (!cloud.las)
+  if (cloud.las)
+    point_files_detail::check_las_range(*cloud.las);
+  else
     point_files_detail::check_coordinates(cloud.table);
   return cloud;
 }

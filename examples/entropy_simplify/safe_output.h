@@ -1,9 +1,9 @@
 // Output that never loses a file: the result goes to a hidden temporary file
 // in the output's folder, every write is checked, and only a complete,
-// fsync'ed file is renamed over the target. On an error, SIGINT or SIGTERM
-// the temporary file is removed and an existing output is left untouched;
-// after SIGKILL the target is untouched and at most the hidden temporary
-// file `.NAME.XXXXXX` remains.
+// fsync'ed file is renamed over the target. On an error, a signal that stops
+// the run (SIGINT, SIGTERM, SIGHUP) or a crash, the temporary file is removed
+// and an existing output is left untouched; after SIGKILL the target is
+// untouched and at most the hidden temporary file `.NAME.XXXXXX` remains.
 
 #ifndef ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
 #define ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
@@ -36,7 +36,7 @@ struct Output_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// The exit code of a run stopped by SIGINT or SIGTERM.
+// The exit code of a run stopped by SIGINT, SIGTERM or SIGHUP.
 constexpr int interrupted_exit_code = 130;
 
 namespace safe_output_detail {
@@ -46,17 +46,39 @@ namespace safe_output_detail {
 inline char pending_temporary[PATH_MAX];
 inline volatile std::sig_atomic_t has_pending_temporary = 0;
 
-inline void remove_temporary_and_exit(int)
+inline void remove_pending_temporary()
 {
   if (has_pending_temporary)
     ::unlink(pending_temporary);
-  static const char message[] = "entropy_simplify: interrupted; no output was written\n";
-  [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+}
+
+inline void say(const char* message) { [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, std::strlen(message)); }
+
+// SIGINT, SIGTERM and SIGHUP: a user or the system stops the run.
+inline void remove_temporary_and_exit(int)
+{
+  remove_pending_temporary();
+  say("entropy_simplify: interrupted; no output was written\n");
   ::_exit(interrupted_exit_code);
 }
 
-// Blocks SIGINT and SIGTERM for its lifetime, so that the handler never sees
-// a half-updated pending_temporary, nor a rename half done.
+// SIGBUS: the mapped input shrank, or its disk failed, while it was read.
+// The others are defects: the run still crashes, but leaves no temporary file.
+inline void remove_temporary_and_fail(int signal)
+{
+  remove_pending_temporary();
+  if (signal == SIGBUS)
+  {
+    say("entropy_simplify: the input could not be read: it shrank, or its disk failed, while it was read; "
+        "no output was written\n");
+    ::_exit(1);
+  }
+  say("entropy_simplify: internal error (a crash); no output was written\n");
+  ::signal(signal, SIG_DFL); // returning re-runs the faulting instruction, which now ends the process
+}
+
+// Blocks SIGINT, SIGTERM and SIGHUP for its lifetime, so that the handler
+// never sees a half-updated pending_temporary, nor a rename half done.
 class Signals_blocked
 {
 public:
@@ -66,6 +88,7 @@ public:
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
     sigprocmask(SIG_BLOCK, &set, &previous_);
   }
   ~Signals_blocked() { sigprocmask(SIG_SETMASK, &previous_, nullptr); }
@@ -80,15 +103,28 @@ inline std::string reason(int error) { return std::strerror(error); }
 
 } // namespace safe_output_detail
 
-// Makes SIGINT and SIGTERM remove the pending temporary file and exit with
-// interrupted_exit_code.
-inline void remove_output_on_interrupt()
+// Makes SIGINT, SIGTERM and SIGHUP remove the pending temporary file and exit
+// with interrupted_exit_code, SIGBUS (an input that shrinks while mapped) and
+// crashes remove it too, and SIGPIPE harmless: a closed stderr makes writes
+// to it fail, not the run.
+inline void remove_output_on_signals()
 {
   struct sigaction action = {};
-  action.sa_handler = safe_output_detail::remove_temporary_and_exit;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  action.sa_handler = safe_output_detail::remove_temporary_and_exit;
+  for (int signal : { SIGINT, SIGTERM, SIGHUP })
+    sigaction(signal, &action, nullptr);
+  // a stack overflow leaves no stack to handle it on: give the handler its own
+  static char alternate_stack[1 << 16];
+  stack_t stack = {};
+  stack.ss_sp = alternate_stack;
+  stack.ss_size = sizeof alternate_stack;
+  sigaltstack(&stack, nullptr);
+  action.sa_handler = safe_output_detail::remove_temporary_and_fail;
+  action.sa_flags = SA_ONSTACK;
+  for (int signal : { SIGBUS, SIGSEGV, SIGFPE, SIGILL, SIGABRT })
+    sigaction(signal, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
 }
 
 // A sink writing to a file descriptor through a buffer, checking every
@@ -256,7 +292,10 @@ private:
   void create_temporary()
   {
     const std::string folder = folder_of(target_);
-    const std::string name = target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1);
+    // the temporary name adds 8 characters: cut a long name so that it stays
+    // within the 255 a file name may have
+    const std::string name =
+      target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1).substr(0, 200);
     std::string pattern = folder + "/." + name + ".XXXXXX";
     if (pattern.size() >= PATH_MAX)
       throw Output_error("cannot write '" + path_ + "': the path is too long");

@@ -37,6 +37,17 @@ inline bool parse_number(std::string_view token, double& value)
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+// At most `length` characters of a file's text for an error message, bytes
+// that do not print shown as '?'.
+inline std::string excerpt(std::string_view text, std::size_t length = 40)
+{
+  std::string shown(text.substr(0, length));
+  for (char& c : shown)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+      c = '?';
+  return shown;
+}
+
 // Reads text line by line, or token by token across lines, counting lines
 // for error messages.
 class Text_reader
@@ -49,17 +60,18 @@ public:
   std::size_t line_number() const { return line_; }
   bool at_end() const { return position_ >= text_.size(); }
 
-  // The next line, without its end of line; false at the end of the text.
+  // The next line, without its end of line (LF, CRLF, or CR alone, as old
+  // Mac files have it); false at the end of the text.
   bool next_line(std::string_view& line)
   {
     if (at_end())
       return false;
     if (line_started_)
       ++line_;
-    const std::size_t end = text_.find('\n', position_);
+    const std::size_t end = text_.find_first_of("\r\n", position_);
     const std::size_t stop = end == std::string_view::npos ? text_.size() : end;
     line = text_.substr(position_, stop - position_);
-    position_ = end == std::string_view::npos ? text_.size() : end + 1;
+    position_ = stop == text_.size() ? stop : stop + (text_.substr(stop, 2) == "\r\n" ? 2 : 1);
     line_started_ = true;
     return true;
   }
@@ -91,7 +103,7 @@ public:
     double value;
     if (!parse_number(token, value))
       throw Read_error("line " + std::to_string(line_) + ": " + what + " is not a number: '" +
-                       std::string(token.substr(0, 40)) + "'");
+                       excerpt(token) + "'");
     return value;
   }
 

@@ -33,7 +33,7 @@ inline Point_table read_xyz(std::string_view bytes)
       if (count == 6 || !parse_number(token, values[count]))
         throw Read_error("line " + std::to_string(reader.line_number()) +
                          ": an XYZ line holds 3 or 6 numbers (x y z, then a normal), got '" +
-                         std::string(line.substr(0, 80)) + "'");
+                         excerpt(line, 80) + "'");
       ++count;
     }
     if (count == 0)

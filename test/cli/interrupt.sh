@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# interrupt.sh PROGRAM INPUT WORK SIGNAL PHASE: sends SIGNAL (INT, TERM or
+# interrupt.sh PROGRAM INPUT WORK SIGNAL PHASE: sends SIGNAL (INT, TERM, HUP or
 # KILL) to a run over an existing output, while it computes or, PHASE
 # "writing", once it has written its result to the temporary file but not yet
 # renamed it (a stuck disk, through the seam ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES).
-# The existing output must be untouched; for INT and TERM, the run exits with
+# The existing output must be untouched; for INT, TERM and HUP, the run exits with
 # 130 and leaves no temporary file; for KILL, at most one hidden temporary
 # file remains.
 set -u

@@ -127,6 +127,7 @@ def main():
     write("grid_georeferenced.las", las(points, offset=(512345.67, 4123456.78, 250.), vlr=vlr(b"entropy_tests", 7,
                                                                                               b"payload bytes")))
     write("duplicates.xyz", "1 2 3\n" * 200)
+    write("grid_cr.xyz", xyz_text(points).replace("\n", "\r"))
 
     # bad input: each file is one row of the table in doc/Entropy_simplification.txt
     write("empty.xyz", "")
@@ -154,6 +155,8 @@ def main():
     write("mixed_widths.xyz", xyz_text(points[:10]) + "0 0 0 0 0 1\n")
     write("triangle_soup.xyz", "0 0 0 1 0 0 0 1 0\n" * 20)
     write("too_few_points.xyz", xyz_text(points[:5]))
+    write("coincident_group.xyz", xyz_text(points) + "0.5 0.5 0.5\n" * 5001)
+    write("las_offset_beyond_1e150.las", las(points, offset=(1e200, 0., 0.)))
     write("bad_signature.las", las(points, signature=b"LASX"))
     write("truncated_header.las", las(points)[:100])
     write("las_version_2.las", las(points, version=(2, 0)))

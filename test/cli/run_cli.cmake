@@ -2,7 +2,7 @@
 #
 # Before the run:
 #   WORK        a folder emptied and made for this test (its files and hidden files)
-#   MKDIR       a folder to make
+#   MKDIR       a folder to make;  MKFIFO  a named pipe to make
 #   COPY        src|dst: copy a file into place (an input, or an existing output)
 #   SENTINEL    a file written with a known text, which must survive the run unchanged
 #   SYMLINK     target|link: make a symbolic link;  HARDLINK  target|link: a hard link
@@ -22,6 +22,9 @@ if(DEFINED WORK)
 endif()
 if(DEFINED MKDIR)
   file(MAKE_DIRECTORY "${MKDIR}")
+endif()
+if(DEFINED MKFIFO)
+  execute_process(COMMAND mkfifo "${MKFIFO}")
 endif()
 if(DEFINED COPY)
   string(REPLACE "|" ";" copy "${COPY}")

@@ -216,7 +216,7 @@ std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, s
        The number kept is `ceil(n * select_percentage / 100)` for `n` points,
        where a product within a relative `1e-9` of an integer counts as that
        integer: 10% of 182,191 points is 18,220 points, as in the paper, and 7%
-       of 100 points is 7 points.}
+       of 100 points is 7 points. It is at least 1.}
        \cgalParamType{double}
        \cgalParamDefault{none: give this or `number_of_output_points`}
        \cgalParamExtra{In `Mode::paper`, the resulting number must be at least `k + 1`.}

@@ -41,7 +41,8 @@ struct Uses_only_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>,
 
 // ceil(n * percentage / 100), where a product within a relative 1e-9 of an
 // integer counts as that integer: 7% of 100 points is 7 points although
-// 100 * 7.0 / 100 is not exactly 7 in binary.
+// 100 * 7.0 / 100 is not exactly 7 in binary. A positive percentage keeps at
+// least one point, however small the product.
 inline std::size_t kept_count_from_percentage(std::size_t n, double percentage)
 {
   if (!(percentage > 0. && percentage <= 100.))
@@ -49,9 +50,9 @@ inline std::size_t kept_count_from_percentage(std::size_t n, double percentage)
                                 std::to_string(percentage));
   const double exact = double(n) * percentage / 100.;
   const double nearest = std::round(exact);
-  if (std::abs(exact - nearest) <= 1e-9 * (std::max)(1., exact))
-    return std::size_t(nearest);
-  return std::size_t(std::ceil(exact));
+  const std::size_t count = std::abs(exact - nearest) <= 1e-9 * (std::max)(1., exact)
+                              ? std::size_t(nearest) : std::size_t(std::ceil(exact));
+  return n == 0 ? 0 : (std::max)(count, std::size_t(1));
 }
 
 // The number of points to keep, from exactly one of `number_of_output_points`
