@@ -74,7 +74,9 @@ inline void remove_temporary_and_fail(int signal)
     ::_exit(1);
   }
   say("entropy_simplify: internal error (a crash); no output was written\n");
-  ::signal(signal, SIG_DFL); // returning re-runs the faulting instruction, which now ends the process
+  // blocked while handled, the signal raised again ends the process on return
+  ::signal(signal, SIG_DFL);
+  ::raise(signal);
 }
 
 // Blocks SIGINT, SIGTERM and SIGHUP for its lifetime, so that the handler

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# interrupt.sh PROGRAM INPUT WORK SIGNAL PHASE: sends SIGNAL (INT, TERM, HUP or
-# KILL) to a run over an existing output, while it computes or, PHASE
+# interrupt.sh PROGRAM INPUT WORK SIGNAL PHASE: sends SIGNAL (INT, TERM, HUP,
+# BUS, SEGV or KILL) to a run over an existing output, while it computes or, PHASE
 # "writing", once it has written its result to the temporary file but not yet
 # renamed it (a stuck disk, through the seam ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES).
-# The existing output must be untouched; for INT, TERM and HUP, the run exits with
-# 130 and leaves no temporary file; for KILL, at most one hidden temporary
-# file remains.
+# The existing output must be untouched. INT, TERM and HUP exit with 130, BUS
+# (what an input that shrinks while mapped raises) with 1, SEGV (a crash) with
+# 139, each leaving no temporary file; after KILL, at most one hidden
+# temporary file remains.
 set -u
 program=$1 input=$2 work=$3 signal=$4 phase=$5
 rm -rf "$work" && mkdir -p "$work"
@@ -30,11 +31,16 @@ code=$?
 fail() { echo "FAIL: $*"; ls -la "$work"; exit 1; }
 [ "$(sha256sum < "$work/out.ply")" = "$before" ] || fail "the existing output was changed"
 temporaries=$(temporary | wc -l)
+case $signal in
+  KILL) expected=137 ;;    # killed: nothing can run
+  BUS) expected=1 ;;       # the mapped input failed: a failure, reported
+  SEGV) expected=139 ;;    # a crash stays a crash, without its temporary file
+  *) expected=130 ;;       # INT, TERM, HUP: interrupted
+esac
+[ "$code" -eq "$expected" ] || fail "exit code $code, expected $expected"
 if [ "$signal" = KILL ]; then
-  [ "$code" -eq 137 ] || fail "exit code $code, expected 137 (killed)"
   [ "$temporaries" -le 1 ] || fail "$temporaries temporary files left"
 else
-  [ "$code" -eq 130 ] || fail "exit code $code, expected 130"
   [ "$temporaries" -eq 0 ] || fail "a temporary file was left"
 fi
 echo "SIG$signal while $phase: exit $code, output untouched, $temporaries temporary file(s)"
