@@ -57,6 +57,20 @@ void print_notes(const Settings& s, const Cloud& cloud, const Point_table& writt
   }
 }
 
+// What `read` returns; a Read_error it throws names the input.
+template <typename Read>
+auto reading(const std::string& path, const Read& read)
+{
+  try
+  {
+    return read();
+  }
+  catch (const Read_error& e)
+  {
+    throw Read_error("cannot read '" + path + "': " + e.what());
+  }
+}
+
 int run(int argc, char** argv)
 {
   const std::optional<Settings> settings = parse_command_line(argc, argv);
@@ -67,28 +81,12 @@ int run(int argc, char** argv)
   check_formats(s, in, out);
 
   remove_output_on_signals();
-  std::unique_ptr<Input_file> input;
-  try
-  {
-    input.reset(new Input_file(s.input));
-  }
-  catch (const Read_error& e)
-  {
-    throw Read_error("cannot read '" + s.input + "': " + e.what());
-  }
+  const Input_file input = reading(s.input, [&] { return Input_file(s.input); });
   Safe_output output(s.output, s.input);
 
   CGAL::Real_timer timer;
   timer.start();
-  Cloud cloud;
-  try
-  {
-    cloud = read_cloud(input->bytes(), in);
-  }
-  catch (const Read_error& e)
-  {
-    throw Read_error("cannot read '" + s.input + "': " + e.what());
-  }
+  const Cloud cloud = reading(s.input, [&] { return read_cloud(input.bytes(), in); });
 
   Progress_bar progress(!s.quiet);
   std::vector<std::array<double, 3> > normals;
