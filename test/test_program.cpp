@@ -58,6 +58,14 @@ es::Settings count_settings(std::size_t count, CGAL::Entropy_simplification::Mod
   return s;
 }
 
+// The rows the program keeps, without progress or normals.
+template <typename ConcurrencyTag>
+std::vector<std::size_t> kept_rows(const es::Cloud& cloud, const es::Settings& s)
+{
+  std::vector<std::array<double, 3> > normals;
+  return es::simplify_cloud<ConcurrencyTag>(cloud, s, std::function<bool(double)>(), normals);
+}
+
 } // namespace
 
 TEST_CASE("XYZ: 3 or 6 numbers a line, comments and blank lines skipped, exact round trip", "[program][xyz]")
@@ -195,12 +203,9 @@ TEST_CASE("The program's simplification: exact count, kept rows in order, sequen
   for (auto mode : { CGAL::Entropy_simplification::Mode::weighted_elimination,
                      CGAL::Entropy_simplification::Mode::paper })
   {
-    std::vector<std::array<double, 3> > normals;
     const es::Settings s = count_settings(37, mode);
-    const std::vector<std::size_t> sequential =
-      es::simplify_cloud<CGAL::Sequential_tag>(cloud, s, std::function<bool(double)>(), normals);
-    const std::vector<std::size_t> parallel =
-      es::simplify_cloud<CGAL::Parallel_if_available_tag>(cloud, s, std::function<bool(double)>(), normals);
+    const std::vector<std::size_t> sequential = kept_rows<CGAL::Sequential_tag>(cloud, s);
+    const std::vector<std::size_t> parallel = kept_rows<CGAL::Parallel_if_available_tag>(cloud, s);
     CHECK(sequential.size() == 37);
     CHECK(std::is_sorted(sequential.begin(), sequential.end()));
     CHECK(std::adjacent_find(sequential.begin(), sequential.end()) == sequential.end());
@@ -220,12 +225,9 @@ TEST_CASE("Georeferenced LAS: the same integer records with other offsets keep t
   for (auto mode : { CGAL::Entropy_simplification::Mode::weighted_elimination,
                      CGAL::Entropy_simplification::Mode::paper })
   {
-    std::vector<std::array<double, 3> > normals;
     const es::Settings s = count_settings(40, mode);
-    const std::vector<std::size_t> a =
-      es::simplify_cloud<CGAL::Sequential_tag>(local, s, std::function<bool(double)>(), normals);
-    const std::vector<std::size_t> b =
-      es::simplify_cloud<CGAL::Sequential_tag>(georeferenced, s, std::function<bool(double)>(), normals);
+    const std::vector<std::size_t> a = kept_rows<CGAL::Sequential_tag>(local, s);
+    const std::vector<std::size_t> b = kept_rows<CGAL::Sequential_tag>(georeferenced, s);
     CHECK(a.size() == 40);
     CHECK(a == b);
 
