@@ -430,13 +430,13 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
     CHECK_THROWS_AS(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options),
                     std::invalid_argument);
   }
-  SECTION("duplicated points: identical to the brute force (see above), and all-equal points go in input order")
+  SECTION("duplicated points: identical to the brute force (see above); fewer than k + 1 distinct points is an error")
   {
-    const std::vector<Point> same(40, Point(1., 2., 3.));
-    const Run run = simplify(same, 5, count(12));
-    CHECK(run.kept == 12);
-    // Undefined normals have the angle 0, every importance is 0: ties go by input position.
-    CHECK(kept_positions(run) == std::set<std::size_t>{ 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39 });
+    std::vector<Point> same(40, Point(1., 2., 3.));
+    const std::vector<Point> before = same;
+    CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(same, 5, count(12), paper_mode()),
+                      Catch::Contains("k + 1 distinct points") && Catch::Contains("has 1 (of 40 points)"));
+    CHECK(same == before);
   }
   SECTION("a planar cloud: equal importances, removed in input order")
   {

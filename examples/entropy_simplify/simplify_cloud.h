@@ -12,12 +12,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
-#include <algorithm>
 #include <array>
 #include <functional>
 #include <numeric>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace entropy_simplify {
@@ -59,35 +56,6 @@ struct Row_normal_map
   }
 };
 
-// The package does not yet collapse coincident points: a group of them
-// costs time and memory quadratic in its size (1.2 GB for 12,000), and near
-// 30,000 its Kd tree's construction overflows the stack. Large groups are
-// refused with a remedy rather than run for hours or crash.
-constexpr std::size_t largest_coincident_group = 5000;
-
-inline void check_coincident_groups(const Cloud& cloud)
-{
-  if (cloud.size() <= largest_coincident_group)
-    return;
-  const Column* xyz[3] = { cloud.table.find("x"), cloud.table.find("y"), cloud.table.find("z") };
-  std::vector<std::array<double, 3> > points(cloud.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    points[i] = coordinates(cloud, xyz, i);
-  std::sort(points.begin(), points.end()); // -0.0 and 0.0 are equivalent, so adjacent
-  for (std::size_t first = 0, next = 1; first < points.size(); first = next++)
-  {
-    while (next < points.size() && points[next] == points[first])
-      ++next;
-    if (next - first > largest_coincident_group)
-      throw std::invalid_argument(
-        "the input holds " + std::to_string(next - first) + " points at one position (" +
-        std::to_string(points[first][0]) + ", " + std::to_string(points[first][1]) + ", " +
-        std::to_string(points[first][2]) + "): groups of more than " + std::to_string(largest_coincident_group) +
-        " coincident points are refused, because the package does not yet collapse them and each group costs "
-        "time and memory quadratic in its size; remove the duplicate points first");
-  }
-}
-
 // The rows the simplification keeps, in input order, and their normals when
 // asked for.
 template <typename ConcurrencyTag>
@@ -95,7 +63,6 @@ std::vector<std::size_t> simplify_cloud(const Cloud& cloud, const Settings& s,
                                         const std::function<bool(double)>& callback,
                                         std::vector<std::array<double, 3> >& normals)
 {
-  check_coincident_groups(cloud);
   std::vector<std::size_t> rows(cloud.size());
   std::iota(rows.begin(), rows.end(), std::size_t(0));
   Row_point_map points{ &cloud, { cloud.table.find("x"), cloud.table.find("y"), cloud.table.find("z") } };

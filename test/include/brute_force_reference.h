@@ -72,9 +72,22 @@ inline std::pair<std::vector<std::size_t>, State>
 removal_sequence(const std::vector<Working_point>& points, unsigned int k, std::size_t target,
                  const ES::Options& options)
 {
-  const Working_vector reference = ES::internal::reference_normal(options, points);
+  // A copy of an earlier point (equal as doubles) goes first, the last first;
+  // the method runs on the other points.
   std::vector<bool> present(points.size(), true);
   std::vector<std::size_t> removed;
+  for (std::size_t i = points.size(); i-- > 0 && points.size() - removed.size() > target;)
+    for (std::size_t j = 0; j < i && present[i]; ++j)
+      if (points[j] == points[i])
+      {
+        present[i] = false;
+        removed.push_back(i);
+      }
+  std::vector<Working_point> distinct;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (present[i])
+      distinct.push_back(points[i]);
+  const Working_vector reference = ES::internal::reference_normal(options, distinct);
   State state = compute_state(points, present, k, options, reference);
   while (points.size() - removed.size() > target)
   {

@@ -96,10 +96,8 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
   static_assert(ES::Uses_only_named_parameters<NamedParameters, internal_np::point_t,
                                                internal_np::geom_traits_t>::value,
                 "compute_mean_normal_angle_entropy() reads only the named parameters point_map and geom_traits");
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  const typename NP_helper::Const_point_map point_map = NP_helper::get_const_point_map(points, np);
 
-  const std::vector<ES::Working_point> input = ES::copy_finite_points(points.begin(), points.end(), point_map);
+  const std::vector<ES::Working_point> input = ES::working_points(points, np);
   if (k < ES::minimum_k(options.normal_estimation) || input.size() < std::size_t(k) + 1)
     throw std::invalid_argument("compute_mean_normal_angle_entropy: k = " + std::to_string(k) +
                                 " is too small for the normal estimation or too large for " +

@@ -10,12 +10,12 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Entropy_simplification/Options.h>
-#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
-#include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
-#include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
+#include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
+#include <CGAL/Entropy_simplification/internal/Distinct_points.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/named_parameters.h>
 #include <CGAL/Entropy_simplification/internal/order_by_removal.h>
-#include <CGAL/Entropy_simplification/internal/reference_plane.h>
+#include <CGAL/Entropy_simplification/internal/simplify_points.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -37,83 +37,22 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-inline void check_simplification_arguments(std::size_t n, unsigned int k, std::size_t target,
-                                           const Options& options)
+inline void check_simplification_arguments(std::size_t n, std::size_t distinct, unsigned int k,
+                                           std::size_t target, const Options& options)
 {
   if (k < minimum_k(options.normal_estimation) || k > Decremental_knn::largest_k)
     throw std::invalid_argument("k = " + std::to_string(k) + " is out of range: the normal estimation needs k in [" +
                                 std::to_string(minimum_k(options.normal_estimation)) + ", " +
                                 std::to_string(Decremental_knn::largest_k) + "]");
-  if (n < std::size_t(k) + 1)
-    throw std::invalid_argument("k = " + std::to_string(k) + " needs at least k + 1 points; the range has " +
-                                std::to_string(n));
+  if (distinct < std::size_t(k) + 1)
+    throw std::invalid_argument("k = " + std::to_string(k) + " needs at least k + 1 distinct points; the range has " +
+                                std::to_string(distinct) + " (of " + std::to_string(n) + " points)");
   if (options.mode == Mode::paper && target < std::size_t(k) + 1)
     throw std::invalid_argument("the paper's mode must keep at least k + 1 = " + std::to_string(k + 1) +
                                 " points so that every point keeps k neighbours; " + std::to_string(target) +
                                 " were asked");
   if (!(options.feature_weight >= 0. && std::isfinite(options.feature_weight)))
     throw std::invalid_argument("Options::feature_weight must be finite and non-negative");
-}
-
-// Iterations of the relocation that ends the default mode.
-constexpr int relocation_iterations = 2;
-
-// Runs an engine down to `target` points and returns the input positions of
-// the removed points in removal order. `write_normal(position, normal)`
-// receives the normal of each remaining point, unless the callback
-// interrupted the initialisation, which counts for the first quarter of the
-// progress.
-template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
-std::vector<Index> run_engine(Engine& engine, const Indexed_points& indexed, std::size_t target,
-                              const std::function<bool(double)>& callback, const NormalWriter& write_normal)
-{
-  auto report = [&callback](double fraction) { return !callback || callback(fraction); };
-  std::vector<Index> removed;
-  if (!engine.template initialize<ConcurrencyTag>([&](double f) { return report(0.25 * f); }))
-    return removed;
-
-  const std::size_t removals = indexed.size() - target;
-  const std::size_t period = (std::max)(std::size_t(1), removals / 1000);
-  removed.reserve(removals);
-  const bool completed = engine.template remove_down_to<ConcurrencyTag>(target, [&](Index p) {
-    removed.push_back(indexed.input_position[p]);
-    return removed.size() % period != 0 || report(0.25 + 0.75 * double(removed.size()) / double(removals));
-  });
-  if (completed)
-  {
-    // A relocated point takes the place, in the removal order, of the point
-    // that replaces it.
-    std::vector<std::size_t> rank(indexed.size(), 0);
-    for (std::size_t r = 0; r < removed.size(); ++r)
-      rank[removed[r]] = r;
-    for (const auto& swap : engine.template relocate<ConcurrencyTag>(relocation_iterations))
-      removed[rank[indexed.input_position[swap.second]]] = indexed.input_position[swap.first];
-  }
-
-  for (Index i = 0; i < Index(indexed.size()); ++i)
-    if (engine.is_present(i))
-      write_normal(indexed.input_position[i], engine.normal(i));
-  return removed;
-}
-
-// Runs the method of `options.mode` on points given in input order.
-template <typename ConcurrencyTag, typename NormalWriter>
-std::vector<Index> simplify(std::vector<Working_point> points, unsigned int k, std::size_t target,
-                            const Options& options, const std::function<bool(double)>& callback,
-                            const NormalWriter& write_normal)
-{
-  if (options.mode == Mode::paper)
-  {
-    const Working_vector reference = reference_normal(options, points);
-    const Indexed_points indexed = sort_spatially(points);
-    points = std::vector<Working_point>();
-    Paper_simplification engine(indexed, k, options, reference);
-    return run_engine<ConcurrencyTag>(engine, indexed, target, callback, write_normal);
-  }
-  const Indexed_points indexed = sort_spatially(points);
-  points = std::vector<Working_point>();
-  Weighted_elimination engine(indexed, k, options);
-  return run_engine<ConcurrencyTag>(engine, indexed, target, callback, write_normal);
 }
 
 } // namespace internal
@@ -296,22 +235,18 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
                 "entropy_simplify_point_set() reads only the named parameters number_of_output_points, "
                 "select_percentage, point_map, normal_map, callback and geom_traits");
 
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Const_point_map PointMap;
-  typedef typename NP_helper::Geom_traits Kernel;
-  typedef typename Kernel::FT FT;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Kernel;
   constexpr bool has_normal_map = !parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value;
-
-  const PointMap point_map = NP_helper::get_const_point_map(points, np);
   // by value: get_parameter returns a temporary
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  std::vector<ES::Working_point> input = ES::copy_finite_points(points.begin(), points.end(), point_map);
+  const std::vector<ES::Working_point> input = ES::working_points(points, np);
   if (input.empty())
     return points.end();
   const std::size_t target = ES::requested_output_size(input.size(), np);
-  ES::check_simplification_arguments(input.size(), k, target, options);
+  const ES::Distinct_points distinct = ES::collapse_duplicates(input);
+  ES::check_simplification_arguments(input.size(), distinct.size(), k, target, options);
   if (target == input.size() && !has_normal_map)
     return points.end();
 
@@ -319,10 +254,11 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   auto write_normal = [&](ES::Index position, const ES::Working_vector& n) {
     if constexpr (has_normal_map)
       put(get_parameter(np, internal_np::normal_map), *at[position],
-          typename Kernel::Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+          typename Kernel::Vector_3(typename Kernel::FT(n.x()), typename Kernel::FT(n.y()),
+                                    typename Kernel::FT(n.z())));
   };
   const std::vector<ES::Index> removed =
-    ES::simplify<ConcurrencyTag>(std::move(input), k, target, options, callback, write_normal);
+    ES::simplify_points<ConcurrencyTag>(distinct, k, target, options, callback, has_normal_map, write_normal);
 
   const std::size_t kept = ES::order_by_removal(at, removed);
   return kept == at.size() ? points.end() : at[kept];

@@ -60,10 +60,7 @@ public:
       throw std::invalid_argument("k must lie in [1, 1000]");
     if (points.size() < std::size_t(k) + 1)
       throw std::invalid_argument("k nearest neighbours need at least k + 1 points");
-    std::vector<Index> all(points.size());
-    for (std::size_t i = 0; i < all.size(); ++i)
-      all[i] = Index(i);
-    build_tree(all);
+    build_tree(all_indices(points.size()));
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }

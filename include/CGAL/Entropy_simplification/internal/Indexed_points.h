@@ -7,6 +7,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_INDEXED_POINTS_H
 
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
@@ -38,6 +39,15 @@ struct Indexed_points
   std::size_t size() const { return points.size(); }
 };
 
+// 0, 1, ..., n - 1.
+inline std::vector<Index> all_indices(std::size_t n)
+{
+  std::vector<Index> indices(n);
+  for (std::size_t i = 0; i < n; ++i)
+    indices[i] = Index(i);
+  return indices;
+}
+
 // The squared distance every neighbour order of the package uses.
 inline double squared_distance(const Working_point& a, const Working_point& b)
 {
@@ -63,7 +73,7 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
     if (points.size() >= std::size_t((std::numeric_limits<Index>::max)()))
       throw std::invalid_argument("the package handles fewer than 2^32 - 1 points");
     const auto& p = get(point_map, *it);
-    const Working_point q(double(p.x()), double(p.y()), double(p.z()));
+    const Working_point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!(in_range(q.x()) && in_range(q.y()) && in_range(q.z())))
       throw std::invalid_argument("point #" + std::to_string(points.size()) +
                                   " has a coordinate that is not finite or exceeds 1e150 in magnitude");

@@ -88,13 +88,6 @@ public:
     return true;
   }
 
-  // The paper's method moves no point after the removals.
-  template <typename ConcurrencyTag>
-  std::vector<std::pair<Index, Index> > relocate(int)
-  {
-    return {};
-  }
-
   // The normal of a present point, estimated on its present neighbours.
   Working_vector normal(Index i) const
   {

@@ -7,6 +7,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
 
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
@@ -134,6 +135,25 @@ private:
   const Indexed_points& m_points;
   Tree m_tree;
 };
+
+// The k nearest neighbours in `tree` of each point of `queries`, nearest
+// first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
+// k points besides each query. Returns false when `progress` asked to stop.
+template <typename ConcurrencyTag, typename Progress>
+bool nearest_neighbor_table(const Point_tree& tree, const std::vector<Index>& queries, unsigned int k,
+                            std::vector<Index>& table, const Progress& progress)
+{
+  table.resize(queries.size() * std::size_t(k));
+  return for_each_index<ConcurrencyTag>(
+    queries.size(),
+    [&](std::size_t r) {
+      thread_local std::vector<Neighbor> best;
+      tree.nearest(queries[r], k, best);
+      for (unsigned int j = 0; j < k; ++j)
+        table[r * k + j] = best[j].id;
+    },
+    progress);
+}
 
 } // namespace internal
 } // namespace Entropy_simplification

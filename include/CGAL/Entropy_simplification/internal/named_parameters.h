@@ -7,13 +7,17 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_NAMED_PARAMETERS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_NAMED_PARAMETERS_H
 
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -83,6 +87,15 @@ std::size_t requested_output_size(std::size_t n, const NamedParameters& np)
       choose_parameter(get_parameter(np, CGAL::internal_np::select_percentage), 0.);
     return kept_count_from_percentage(n, percentage);
   }
+}
+
+// The points of a range, through the point map of the named parameters, in
+// input order and double precision (see copy_finite_points).
+template <typename PointRange, typename NamedParameters>
+std::vector<Working_point> working_points(const PointRange& points, const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  return copy_finite_points(points.begin(), points.end(), NP_helper::get_const_point_map(points, np));
 }
 
 } // namespace internal

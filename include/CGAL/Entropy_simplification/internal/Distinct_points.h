@@ -1,0 +1,77 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Coincident points collapsed to one representative before either mode runs.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
+
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+
+#include <algorithm>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// The points of a range with every group of coincident points (equal as
+// doubles, so -0.0 equals 0.0) reduced to its first in input order.
+//
+// Both modes would otherwise suffer copies: c copies of a point are each
+// other's neighbours at distance 0, so the default mode's neighbour lists and
+// the paper mode's exact updates grow as c^2, and the copies' normals and
+// entropies are undefined. A copy adds nothing to the geometry, so copies are
+// removed before any distinct point and return, in input order, only once
+// every distinct point is kept.
+struct Distinct_points
+{
+  std::vector<Working_point> points;  // the representatives, in input order
+  std::vector<Index> input_position;  // of each representative
+  std::vector<Index> copies;          // input positions of the other points, ascending
+  std::vector<Index> representative;  // for each copy, the index of its representative in `points`
+
+  std::size_t size() const { return points.size(); }
+};
+
+// Sorting is O(n log n) whatever the number of copies, and sorting by
+// coordinates then position makes the first of each run of equal points the
+// earliest in input order.
+inline Distinct_points collapse_duplicates(const std::vector<Working_point>& points)
+{
+  std::vector<Index> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = Index(i);
+  auto key = [&points](Index i) { return std::make_tuple(points[i].x(), points[i].y(), points[i].z(), i); };
+  std::sort(order.begin(), order.end(), [&key](Index a, Index b) { return key(a) < key(b); });
+
+  // the input position of the representative of each point
+  std::vector<Index> first(points.size());
+  for (std::size_t r = 0; r < order.size(); ++r)
+    first[order[r]] = r > 0 && points[order[r]] == points[order[r - 1]] ? first[order[r - 1]] : order[r];
+
+  Distinct_points result;
+  std::vector<Index> slot(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    if (first[i] == i)
+    {
+      slot[i] = Index(result.points.size());
+      result.points.push_back(points[i]);
+      result.input_position.push_back(Index(i));
+    }
+    else
+    {
+      result.copies.push_back(Index(i));
+      result.representative.push_back(slot[first[i]]);
+    }
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H

@@ -1,0 +1,186 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The field the default mode's elimination follows: each point's normal and
+// the factor of its interaction radius, from the entropy of the normals of
+// its neighbourhood at two scales and from the input's local density.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ELIMINATION_FIELD_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ELIMINATION_FIELD_H
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Feature_field.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Point_tree.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// What the elimination needs of each point, computed once on the input from
+// its k nearest neighbours: its normal, and the factor of its interaction
+// radius (1 off features, smaller on them).
+struct Elimination_field
+{
+  std::vector<Working_vector> normals;
+  std::vector<double> scale;
+  // the area the points sample, each point's share weighted by the density
+  // its scale asks for (1 / scale^2)
+  double effective_area = 0.;
+};
+
+// The entropy of the normals of each point's neighbourhood, `neighbors(i)`
+// giving the k nearest neighbours of point `i` nearest first; the normals,
+// estimated on each point and its neighbours, go to `normals`.
+template <typename ConcurrencyTag, typename NeighborsOf, typename Progress>
+bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Index>& subset, unsigned int k,
+                             Normal_estimation estimation, const NeighborsOf& neighbors,
+                             std::vector<Working_vector>& normals, std::vector<double>& entropy,
+                             const Progress& progress)
+{
+  const std::size_t m = subset.size();
+  if (!for_each_index<ConcurrencyTag>(
+        m,
+        [&](std::size_t r) {
+          const Index i = subset[r];
+          const Index* near = neighbors(i);
+          normals[i] = estimate_normal(estimation, k + 1, [&](std::size_t j) -> const Working_point& {
+            return points.points[j == 0 ? i : near[j - 1]];
+          });
+        },
+        [&](std::size_t done) { return progress(0.5 * double(done) / double(m)); }))
+    return false;
+  return for_each_index<ConcurrencyTag>(
+    m,
+    [&](std::size_t r) {
+      const Index i = subset[r];
+      const Index* near = neighbors(i);
+      entropy[i] = normal_tensor_entropy(k + 1, [&](std::size_t j) -> const Working_vector& {
+        return normals[j == 0 ? i : near[j - 1]];
+      });
+    },
+    [&](std::size_t done) { return progress(0.5 + 0.5 * double(done) / double(m)); });
+}
+
+// The feature strength at a coarse scale, for every point: that of its
+// nearest point of `coarse`, whose normals and entropies are computed among
+// the coarse points only. Their neighbourhoods are wider, so that a smooth
+// curvature that scanner noise hides at the fine scale shows there.
+template <typename ConcurrencyTag>
+std::vector<double> coarse_feature_strength(const Indexed_points& points, const std::vector<Index>& coarse,
+                                            unsigned int k, Normal_estimation estimation)
+{
+  const std::size_t n = points.size();
+  std::vector<double> strength(n, 0.);
+  if (coarse.size() < std::size_t(k) + 1)
+    return strength;
+  const Point_tree tree(points, coarse.begin(), coarse.end());
+  std::vector<Index> knn;
+  nearest_neighbor_table<ConcurrencyTag>(tree, coarse, k, knn, [](std::size_t) { return true; });
+  // the position of each coarse point in `coarse`, one past the end for the others
+  std::vector<Index> slot(n, Index(coarse.size()));
+  for (std::size_t r = 0; r < coarse.size(); ++r)
+    slot[coarse[r]] = Index(r);
+  std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
+  std::vector<double> entropy(n, 0.);
+  estimate_normal_entropy<ConcurrencyTag>(
+    points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; }, normals, entropy,
+    [](double) { return true; });
+  std::vector<double> coarse_entropy;
+  for (Index c : coarse)
+    coarse_entropy.push_back(entropy[c]);
+  const double floor = entropy_noise_floor(coarse_entropy);
+  for_each_index<ConcurrencyTag>(
+    n,
+    [&](std::size_t i) {
+      thread_local std::vector<Neighbor> nearest;
+      Index c = Index(i);
+      // a coarse point is its own nearest, which the search leaves out
+      if (slot[i] == coarse.size())
+      {
+        tree.nearest(Index(i), 1, nearest);
+        c = nearest.front().id;
+      }
+      strength[i] = feature_strength(entropy[c], floor);
+    },
+    [](std::size_t) { return true; });
+  return strength;
+}
+
+// The area each point samples: k points in a disc of the radius of its k-th
+// nearest neighbour.
+template <typename NeighborsOf>
+std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, const NeighborsOf& neighbors)
+{
+  std::vector<double> area(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    area[i] = CGAL_PI * squared_distance(points.points[i], points.points[neighbors(Index(i))[k - 1]]) / double(k);
+  return area;
+}
+
+// The factor of each point's interaction radius: the feature term, whose
+// weight the budget may lower, times the density term. Also sets the
+// effective area, the sampled area weighted by the density each scale asks
+// for (1 / scale^2), summed in input order so that it does not depend on the
+// internal order.
+inline void set_scales(const Indexed_points& points, const std::vector<double>& area,
+                       const std::vector<double>& strength, double feature_weight, Elimination_field& field)
+{
+  const std::size_t n = points.size();
+  double total_area = 0., feature_area = 0.;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    total_area += area[i];
+    feature_area += area[i] * strength[i];
+  }
+  const double weight = budgeted_feature_weight(feature_weight, feature_area, total_area);
+  const double typical_area = median(area);
+
+  field.scale.resize(n);
+  std::vector<double> weighted_area(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    field.scale[i] = interaction_scale(strength[i], weight) * density_scale(area[i], typical_area);
+    weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
+  }
+  field.effective_area = 0.;
+  for (double a : weighted_area)
+    field.effective_area += a;
+}
+
+// The field from the k nearest neighbours of each point, `neighbors(i)`
+// giving them nearest first: normals estimated on each point and its
+// neighbours; the feature strength the greater of that of the entropy of the
+// normals of the same neighbourhood and that of the coarse scale.
+template <typename ConcurrencyTag, typename NeighborsOf, typename Progress>
+bool compute_elimination_field(const Indexed_points& points, const std::vector<Index>& coarse, unsigned int k,
+                               const Options& options, const NeighborsOf& neighbors, Elimination_field& field,
+                               const Progress& progress)
+{
+  const std::size_t n = points.size();
+  field.normals.assign(n, CGAL::NULL_VECTOR);
+  std::vector<double> entropy(n);
+  if (!estimate_normal_entropy<ConcurrencyTag>(points, all_indices(n), k, options.normal_estimation, neighbors,
+                                               field.normals, entropy, progress))
+    return false;
+
+  std::vector<double> strength =
+    coarse_feature_strength<ConcurrencyTag>(points, coarse, k, options.normal_estimation);
+  const double floor = entropy_noise_floor(entropy);
+  for (std::size_t i = 0; i < n; ++i)
+    strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]);
+
+  set_scales(points, sampled_areas(points, k, neighbors), strength, options.feature_weight, field);
+  return true;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ELIMINATION_FIELD_H

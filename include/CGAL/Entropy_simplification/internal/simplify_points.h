@@ -1,0 +1,167 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Runs either mode on the distinct points of a range and returns its removal
+// order, the copies of coincident points first.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Distinct_points.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Lloyd_relocation.h>
+#include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
+#include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
+#include <CGAL/Entropy_simplification/internal/reference_plane.h>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// Iterations of the relocation that ends the default mode.
+constexpr int relocation_iterations = 2;
+
+// What an engine did: its removals, as indices of the Indexed_points, in
+// removal order, unless the callback stopped it during its initialisation.
+struct Engine_run
+{
+  bool initialized = false;
+  bool completed = false;
+  std::vector<Index> removed;
+};
+
+// Initialises an engine and removes points down to `target`. The callback
+// receives the fraction done, the initialisation counting for the first
+// quarter, about a thousand times in all.
+template <typename ConcurrencyTag, typename Engine>
+Engine_run run_engine(Engine& engine, std::size_t n, std::size_t target, const std::function<bool(double)>& callback)
+{
+  auto report = [&callback](double fraction) { return !callback || callback(fraction); };
+  Engine_run run;
+  run.initialized = engine.template initialize<ConcurrencyTag>([&](double f) { return report(0.25 * f); });
+  if (!run.initialized)
+    return run;
+  const std::size_t removals = n - target;
+  const std::size_t period = (std::max)(std::size_t(1), removals / 1000);
+  run.removed.reserve(removals);
+  run.completed = engine.template remove_down_to<ConcurrencyTag>(target, [&](Index p) {
+    run.removed.push_back(p);
+    return run.removed.size() % period != 0 || report(0.25 + 0.75 * double(run.removed.size()) / double(removals));
+  });
+  return run;
+}
+
+// Which points an engine's run left present.
+inline std::vector<char> present_after(const Engine_run& run, std::size_t n)
+{
+  std::vector<char> present(n, 1);
+  for (Index i : run.removed)
+    present[i] = 0;
+  return present;
+}
+
+// The relocation that ends the default mode. A relocated point takes the
+// place, in the removal order, of the point that replaces it.
+template <typename ConcurrencyTag>
+void relocate(const Indexed_points& points, Engine_run& run)
+{
+  std::vector<char> present = present_after(run, points.size());
+  std::vector<std::size_t> rank(points.size(), 0);
+  for (std::size_t r = 0; r < run.removed.size(); ++r)
+    rank[run.removed[r]] = r;
+  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations))
+    run.removed[rank[swap.second]] = swap.first;
+}
+
+// Writes the normal of each present point, and returns the removals as
+// positions in the points given to `sort_spatially`.
+template <typename Engine, typename NormalWriter>
+std::vector<Index> finish(const Engine& engine, const Indexed_points& points, const Engine_run& run,
+                          const NormalWriter& write_normal)
+{
+  const std::vector<char> present = present_after(run, points.size());
+  for (Index i = 0; i < Index(points.size()); ++i)
+    if (present[i])
+      write_normal(points.input_position[i], engine.normal(i));
+  std::vector<Index> removed;
+  removed.reserve(run.removed.size());
+  for (Index i : run.removed)
+    removed.push_back(points.input_position[i]);
+  return removed;
+}
+
+// The method of `options.mode` on points without copies, given in input
+// order, down to `target`: the positions of the removed points in removal
+// order, or nothing when the callback stopped the initialisation.
+template <typename ConcurrencyTag, typename NormalWriter>
+std::optional<std::vector<Index> > simplify_distinct_points(const std::vector<Working_point>& points, unsigned int k,
+                                                            std::size_t target, const Options& options,
+                                                            const std::function<bool(double)>& callback,
+                                                            const NormalWriter& write_normal)
+{
+  const Indexed_points indexed = sort_spatially(points);
+  if (options.mode == Mode::paper)
+  {
+    Paper_simplification engine(indexed, k, options, reference_normal(options, points));
+    const Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
+    if (!run.initialized)
+      return std::nullopt;
+    return finish(engine, indexed, run, write_normal);
+  }
+  Weighted_elimination engine(indexed, k, options);
+  Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
+  if (!run.initialized)
+    return std::nullopt;
+  if (run.completed)
+    relocate<ConcurrencyTag>(indexed, run);
+  return finish(engine, indexed, run, write_normal);
+}
+
+// The method of `options.mode` on a range down to `target` points: the
+// input positions of the removed points in removal order. The copies of
+// coincident points go first, the last in input order first, so that they
+// come back in input order once every distinct point is kept; a kept copy
+// gets the normal of its representative. `write_normal(position, normal)`
+// receives the normal of each kept point when `with_normals`. Nothing is
+// removed when the callback stops the initialisation.
+template <typename ConcurrencyTag, typename NormalWriter>
+std::vector<Index> simplify_points(const Distinct_points& distinct, unsigned int k, std::size_t target,
+                                   const Options& options, const std::function<bool(double)>& callback,
+                                   bool with_normals, const NormalWriter& write_normal)
+{
+  const std::size_t kept_copies = target > distinct.size() ? target - distinct.size() : 0;
+  std::vector<Index> removed;
+  for (std::size_t c = distinct.copies.size(); c-- > kept_copies;)
+    removed.push_back(distinct.copies[c]);
+  if (target >= distinct.size() && !with_normals)
+    return removed;
+
+  std::vector<Working_vector> normal_of_slot(kept_copies > 0 ? distinct.size() : 0);
+  const std::optional<std::vector<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
+    distinct.points, k, (std::min)(target, distinct.size()), options, callback,
+    [&](Index slot, const Working_vector& normal) {
+      write_normal(distinct.input_position[slot], normal);
+      if (kept_copies > 0)
+        normal_of_slot[slot] = normal;
+    });
+  if (!removed_distinct)
+    return {};
+  for (Index slot : *removed_distinct)
+    removed.push_back(distinct.input_position[slot]);
+  for (std::size_t c = 0; c < kept_copies; ++c)
+    write_normal(distinct.copies[c], normal_of_slot[distinct.representative[c]]);
+  return removed;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
