@@ -80,7 +80,14 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    gives). Points are only moved: coordinates and other attributes are never
    altered.
 
-   With `N(p)` the `k` nearest neighbours of `p` (`p` excluded, ties broken by
+   Coincident points (equal as doubles, `-0.0` equal to `0.0`) are first
+   collapsed to their first copy in input order: both modes run on the
+   distinct points, and the other copies are removed before any of them.
+   Copies are kept only when more points are asked for than there are
+   distinct points, and then the earliest copies in input order. The paper
+   is silent on coincident points; this is the package's one deviation from
+   it in `Mode::paper`. Then, with `N(p)` the `k` nearest neighbours of `p`
+   among the distinct points (`p` excluded, ties broken by
    input position), and the normal of `p` estimated on `p` and `N(p)`, `k + 1`
    points, as `CGAL::pca_estimate_normals()` does (Eq. 1-2;
    `Options::normal_estimation` selects jet fitting instead), the two methods
@@ -104,11 +111,11 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
 
    <b>`Mode::paper`, the paper's method,</b> with `N(p)` taken among the
    points still present:
-   - a reference plane is fitted to the whole input once (Eq. 3; or given in
-     `Options::reference_normal`);
+   - a reference plane is fitted to all the distinct points once (Eq. 3; or
+     given in `Options::reference_normal`);
    - the normal angle `theta_p` of `p` is the angle between its normal and the
      reference plane, in `[0, pi/2]` (Eq. 4); it is 0 for a point without
-     normal (points that all coincide have none);
+     normal (a jet fit can degenerate);
    - the importance of `p` is the entropy, in nats, of the angles of `p` and
      `N(p)` normalised by their sum (Eq. 5), with `0 log 0 = 0` and an
      importance of 0 when all these angles are 0;
@@ -173,7 +180,8 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
        \cgalParamDescription{a property map that receives the final unit normal of every
        kept point (the null vector where it is undefined): in `Mode::paper`,
        estimated on its neighbours among the kept points; in the default mode,
-       on its neighbours in the input, a better estimate. Nothing else is written: without this
+       on its neighbours in the input, a better estimate. A kept copy of a point
+       receives the normal of its first copy. Nothing else is written: without this
        parameter, the points' normals, such as those of a `CGAL::Point_set_3`,
        are left untouched.}
        \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
@@ -189,9 +197,14 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
        \cgalParamExtra{It is called on the calling thread with the fraction of the work
                        done, in `[0, 1]`: the initial estimation counts for the first
                        quarter, then the removals, about a thousand calls in all. When it
-                       returns `false`, the algorithm stops, and the range is partitioned
-                       as if the target had been the number of points then present
-                       (everything is kept when it stops during the initial estimation).}
+                       returns `false`, the algorithm stops: the points removed so far
+                       follow the kept ones, in reverse order of removal as always, and
+                       the points still present are kept (everything is kept when it
+                       stops during the initial estimation). In `Mode::paper`, that is
+                       exactly what a call asking for that number of points gives. In
+                       the default mode, whose stages and radius depend on the target,
+                       it is the state of the elimination at that moment, without the
+                       final relocation.}
      \cgalParamNEnd
 
      \cgalParamNBegin{geom_traits}
@@ -207,16 +220,18 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    \throw std::invalid_argument (in every build type, before any point is
    moved) when a coordinate is not finite or exceeds 1e150 in magnitude (squared
    distances would overflow); when `k` is below 2 (below 5 with
-   jet fitting) or above 1000; when the range has fewer than `k + 1` points;
+   jet fitting) or above 1000; when the range has fewer than `k + 1` distinct
+   points;
    when `select_percentage` is outside `(0, 100]` or `number_of_output_points`
    is not positive; when `Options::feature_weight` is negative or not finite;
    in `Mode::paper`, when fewer than `k + 1` points would be kept, or when
    `Options::reference_normal` is null or not finite.
 
-   Duplicated points are valid input: they are ordinary neighbours at distance
-   0. In `Mode::paper`, a planar cloud gives every point the same
-   importance, so points are removed in input order. A collinear cloud gives
-   an arbitrary but deterministic result.
+   Coincident points are valid input and cost no more than the sort that
+   finds them, however many copies there are. Points that differ by any
+   amount, however small, are distinct. In `Mode::paper`, a planar cloud
+   gives every point the same importance, so points are removed in input
+   order. A collinear cloud gives an arbitrary but deterministic result.
 */
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
