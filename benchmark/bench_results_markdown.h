@@ -117,6 +117,25 @@ inline void peer_summary(std::ostream& md, const Report& r, const std::string& o
   md << "\n";
 }
 
+// The cells where a method kept fewer points than asked, because no value
+// of its size parameter reaches the count: comparisons there are not at
+// equal counts.
+inline std::string short_cells(const Report& r)
+{
+  std::ostringstream out;
+  std::size_t cells = 0;
+  for (const Quality_row& row : r.quality)
+    if (!row.skipped && row.count < row.target)
+    {
+      out << (cells++ ? "; " : "") << row.method << " on " << row.input << " at " << fixed(row.ratio, 0)
+          << "% (" << row.count << " of " << row.target << ")";
+    }
+  if (cells == 0)
+    return "Every method reached the count. ";
+  return "In " + std::to_string(cells) + " cells a method could not reach the count and kept fewer points, so "
+         "these comparisons are not at equal counts: " + out.str() + ". ";
+}
+
 // `figures` is the path from the Markdown file to the results directory.
 inline void write_results_markdown(const Report& r, const std::string& file, const std::string& figures)
 {
@@ -132,11 +151,12 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
   if (r.quick)
     md << "**This is a `--quick` run**: inputs divided in size by 8, fewer ratios, one timing run. Its figures "
           "check the pipeline; they are not the results.\n\n";
-  md << "Every method keeps exactly the same number of points, `ceil(n p / 100)` for `p` percent of `n` input "
+  md << "Every method is asked for the same number of points, `ceil(n p / 100)` for `p` percent of `n` input "
         "points. Methods with a size parameter reach it by a search of that parameter, then drop their surplus "
-        "uniformly at random (seed 1); `quality.csv` gives the count each reached before that trim. The package "
-        "is progressive: one run to the smallest ratio serves every ratio. All distances are divided by the "
-        "diagonal of the input's bounding box. Times are medians of "
+        "uniformly at random (seed 1); `quality.csv` gives the count each reached before that trim. "
+     << short_cells(r)
+     << "The paper's mode is progressive: one run to the smallest ratio serves every ratio; the default mode runs "
+        "once per ratio. All distances are divided by the diagonal of the input's bounding box. Times are medians of "
      << r.repeats << " runs; speed is given as the ratio to one sequential pass of `CGAL::pca_estimate_normals` "
      << "(k = 10) on the same input in the same run. Cells where WLOP was predicted to take more than "
      << fixed(r.skip_seconds, 0) << " s are skipped and listed at the end. Definitions: `benchmark/README.md`.\n\n";
