@@ -75,7 +75,7 @@ std::vector<Point> distinct_surface()
 
 } // namespace
 
-TEST_CASE("Copies go first, the last first; the distinct points simplify as if alone", "[duplicates]")
+TEST_CASE("Copies go first, the last first: the distinct points simplify as if alone", "[duplicates]")
 {
   const std::vector<Point> distinct = distinct_surface();
   const Cloud_with_copies cloud = add_copies(distinct);
@@ -126,7 +126,7 @@ TEST_CASE("Copies come back in input order once every distinct point is kept", "
   }
 }
 
-TEST_CASE("Points 1e-12 apart are distinct; fewer than k + 1 distinct points is an error", "[duplicates]")
+TEST_CASE("Points 1e-12 apart are distinct, and fewer than k + 1 distinct points is an error", "[duplicates]")
 {
   std::vector<Point> six;
   for (int i = 0; i < 6; ++i)

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "brute_force_reference.h"
+#include "require_tbb.h"
 #include "test_clouds.h"
 
 #include <CGAL/Entropy_simplification/compute_mean_normal_angle_entropy.h>
@@ -330,11 +331,13 @@ TEST_CASE("A callback sees progress, and stopping leaves a valid partition", "[g
 
 TEST_CASE("Results are deterministic, and the same sequentially and in parallel", "[guarantees]")
 {
+  test_parallel::require_tbb();
   const std::vector<Point> points = test_clouds::small_replica(40000, 9000, 0.002, 13).points;
   const auto np = CGAL::parameters::select_percentage(10.);
   const Run first = simplify<CGAL::Sequential_tag>(points, 10, np);
   const Run again = simplify<CGAL::Sequential_tag>(points, 10, np);
-  const Run parallel = simplify<CGAL::Parallel_if_available_tag>(points, 10, np);
+  const Run parallel =
+    test_parallel::on_two_threads_or_more([&] { return simplify<test_parallel::Parallel_tag>(points, 10, np); });
   CHECK(first.range == again.range);
   CHECK(first.range == parallel.range);
 }

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "require_tbb.h"
 #include "test_clouds.h"
 
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
@@ -111,7 +112,7 @@ TEST_CASE("Point_set_3: normals are written to the map given explicitly", "[poin
   CHECK(unit);
 }
 
-TEST_CASE("Kernels: Epick and Simple_cartesian<double> agree; float compiles and keeps the count", "[kernels]")
+TEST_CASE("Kernels: Epick and Simple_cartesian<double> agree, float compiles and keeps the count", "[kernels]")
 {
   const std::vector<Epick::Point_3> epick = replica_points(1600, 400, 6);
   std::vector<CGAL::Simple_cartesian<double>::Point_3> cartesian;
@@ -149,6 +150,7 @@ TEST_CASE("Kernels: Epick and Simple_cartesian<double> agree; float compiles and
 
 TEST_CASE("Real scans from libcgal-demo: count, subset, determinism", "[real data]")
 {
+  test_parallel::require_tbb();
   for (const std::string name : { "points_3/kitten.xyz", "points_3/b9_training.ply", "points_3/oni.pwn" })
   {
     INFO(name);
@@ -163,9 +165,12 @@ TEST_CASE("Real scans from libcgal-demo: count, subset, determinism", "[real dat
       std::vector<Epick::Point_3> sequential = points, parallel = points;
       const auto is = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
         sequential, 10, CGAL::parameters::select_percentage(5.), options);
-      const auto ip = CGAL::entropy_simplify_point_set<CGAL::Parallel_if_available_tag>(
-        parallel, 10, CGAL::parameters::select_percentage(5.), options);
+      const auto ip = test_parallel::on_two_threads_or_more([&] {
+        return CGAL::entropy_simplify_point_set<test_parallel::Parallel_tag>(
+          parallel, 10, CGAL::parameters::select_percentage(5.), options);
+      });
       CHECK(std::size_t(is - sequential.begin()) == ES::internal::kept_count_from_percentage(points.size(), 5.));
+      CHECK(ip - parallel.begin() == is - sequential.begin());
       CHECK(sequential == parallel);
       std::multiset<std::array<double, 3> > before, after;
       for (const auto& p : points)

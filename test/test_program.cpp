@@ -6,6 +6,7 @@
 
 #include "input_file.h"
 #include "point_files.h"
+#include "require_tbb.h"
 #include "safe_output.h"
 #include "simplify_cloud.h"
 
@@ -131,7 +132,7 @@ TEST_CASE("OFF: OFF and NOFF vertices, faces dropped with a note, counts checked
   CHECK(out.bytes == "OFF\n2 0 0\n0 0 0\n1 1 1\n");
 }
 
-TEST_CASE("The format is the extension's, in any case; LAZ says how to convert", "[program]")
+TEST_CASE("The format is the extension's, in any case, and LAZ says how to convert", "[program]")
 {
   CHECK(es::format_of("a/b.PLY") == es::Format::ply);
   CHECK(es::format_of("scan.pwn") == es::Format::xyz);
@@ -197,6 +198,7 @@ TEST_CASE("Safe output: the target changes only on commit, and never partly", "[
 TEST_CASE("The program's simplification: exact count, kept rows in order, sequential = parallel",
           "[program][simplify]")
 {
+  test_parallel::require_tbb();
   es::Input_file file(cli_input("grid.xyz"));
   const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
   REQUIRE(cloud.size() == 144);
@@ -205,7 +207,8 @@ TEST_CASE("The program's simplification: exact count, kept rows in order, sequen
   {
     const es::Settings s = count_settings(37, mode);
     const std::vector<std::size_t> sequential = kept_rows<CGAL::Sequential_tag>(cloud, s);
-    const std::vector<std::size_t> parallel = kept_rows<CGAL::Parallel_if_available_tag>(cloud, s);
+    const std::vector<std::size_t> parallel =
+      test_parallel::on_two_threads_or_more([&] { return kept_rows<test_parallel::Parallel_tag>(cloud, s); });
     CHECK(sequential.size() == 37);
     CHECK(std::is_sorted(sequential.begin(), sequential.end()));
     CHECK(std::adjacent_find(sequential.begin(), sequential.end()) == sequential.end());
