@@ -7,10 +7,9 @@
 #ifndef ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
 #define ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
 
+#include "bench_machine.h"
 #include "bench_metrics.h"
 #include "bench_methods.h"
-
-#include <CGAL/version.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,28 +74,11 @@ inline std::string file_name(const std::string& method)
   return s;
 }
 
-inline std::string fixed(double v, int digits)
-{
-  if (std::isnan(v))
-    return "n/a";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << v;
-  return s.str();
-}
-
 inline std::string scientific(double v)
 {
   std::ostringstream s;
   s << std::scientific << std::setprecision(2) << v;
   return s.str();
-}
-
-inline std::string thousands(std::size_t v)
-{
-  std::string s = std::to_string(v);
-  for (int i = int(s.size()) - 3; i > 0; i -= 3)
-    s.insert(std::size_t(i), ",");
-  return s;
 }
 
 inline std::string percent(double v) { return fixed(100. * v, 1) + "%"; }
@@ -145,27 +127,6 @@ inline std::vector<double> ratios_of(const Report& r, const std::string& input)
     if (q.input == input)
       s.insert(q.ratio);
   return std::vector<double>(s.begin(), s.end());
-}
-
-inline std::string machine_description()
-{
-  std::string cpu = "unknown CPU";
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);)
-    if (line.rfind("model name", 0) == 0)
-    {
-      cpu = line.substr(line.find(':') + 2);
-      break;
-    }
-  double memory = 0.;
-  std::ifstream meminfo("/proc/meminfo");
-  for (std::string line; std::getline(meminfo, line);)
-    if (line.rfind("MemTotal", 0) == 0)
-      memory = std::stod(line.substr(line.find(':') + 1)) / 1024. / 1024.;
-  std::ostringstream s;
-  s << cpu << ", " << std::thread::hardware_concurrency() << " hardware threads, " << fixed(memory, 0)
-    << " GiB; g++ " << __VERSION__ << ", -O3 -DNDEBUG; CGAL " << CGAL_VERSION_STR;
-  return s.str();
 }
 
 inline void write_csv(const Report& r, const std::string& dir)

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The benchmark's one command. Builds it (-O3 -DNDEBUG), runs every method on
 # every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
-# figures). With --quick: smaller inputs, a couple of minutes, written to
-# build-benchmark/quick/ so that the committed results stay as they are.
+# figures), then the section "Coincident points" of RESULTS.md
+# (bench_duplicates). With --quick: smaller inputs, a couple of minutes,
+# written to build-benchmark/quick/ so that the committed results stay as they
+# are.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-}"
@@ -16,9 +18,12 @@ command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (a
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
   -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=OFF -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
-cmake --build build-benchmark --target run_benchmark -j"$(nproc)"
+cmake --build build-benchmark --target run_benchmark bench_duplicates -j"$(nproc)"
 mkdir -p "$out/results"
 rm -f "$out"/results/*.png "$out"/results/points/*.txt
 build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
 (cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
+# Coincident points: one process per case, its section appended to RESULTS.md
+# (--smoke with --quick: the smaller cases, without the 220k reference).
+build-benchmark/benchmark/bench_duplicates ${mode:+--smoke} --append "$out/RESULTS.md"
 echo "benchmark/run.sh: wrote $out/RESULTS.md"
