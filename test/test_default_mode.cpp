@@ -1,26 +1,34 @@
-// Tests of the default mode (Mode::weighted_elimination): the removal order
-// against a brute-force reference, the guarantees of entropy_simplify_point_set
-// in that mode (count, subset, permutation, callback, determinism, bad input),
-// and what the mode is for: no holes, and more points on features.
+// Tests of the default mode (Mode::weighted_elimination): its feature field
+// and its removal order against a reference computed from the user manual's
+// definitions with code of its own (reference_elimination.h), the guarantees
+// of entropy_simplify_point_set in that mode (count, subset, permutation,
+// callback, determinism, bad input), and what the mode is for: no holes, and
+// more points on features.
 
 #include <catch2/catch.hpp>
 
-#include "brute_force_elimination.h"
+#include "reference_elimination.h"
+#include "require_tbb.h"
 #include "test_clouds.h"
 
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
 
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace ES = CGAL::Entropy_simplification;
+namespace ESI = CGAL::Entropy_simplification::internal;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using Indexed = std::pair<Point, std::size_t>;
@@ -52,7 +60,8 @@ Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, con
   return run;
 }
 
-std::vector<std::size_t> removal_order(const Run& run)
+// The input positions of the removed points, first removed first.
+std::vector<std::size_t> removals(const Run& run)
 {
   return std::vector<std::size_t>(run.order.rbegin(), run.order.rend() - std::ptrdiff_t(run.kept));
 }
@@ -81,15 +90,154 @@ double largest_gap(const std::vector<Point>& points, const Run& run)
   return std::sqrt(largest);
 }
 
+// A sheet folded at a right angle along the crease x = z = 0, with Gaussian
+// noise across each half, at random positions: no two distances tie. Without
+// noise, the normal entropies are 0 off the crease and the noise floor is at
+// its one-degree minimum.
+test_clouds::Cloud fold(std::size_t n, double noise, std::uint64_t seed)
+{
+  test_clouds::Random random(seed);
+  test_clouds::Cloud c{ "fold " + std::to_string(n) + " noise " + std::to_string(noise), {} };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double u = 2. * random.uniform() - 1., v = random.uniform(), across = noise * random.gaussian();
+    c.points.emplace_back(u < 0. ? u : across, v, u < 0. ? across : u);
+  }
+  return c;
+}
+
+// The paper's board and ball in 800 points, a tenth on the ball. At k = 5 the
+// coarse scale (13 points) sees the ball, and the feature budget lowers the
+// weight.
+test_clouds::Cloud board_and_ball() { return test_clouds::small_replica(720, 80, 0.002, 11); }
+
+struct Setting
+{
+  test_clouds::Cloud cloud;
+  unsigned int k;
+};
+
+// The package's field before any removal, by input position.
+template <typename ConcurrencyTag>
+ESI::Elimination_field package_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options)
+{
+  const ESI::Indexed_points indexed = ESI::sort_spatially(points);
+  ESI::Weighted_elimination engine(indexed, k, options);
+  REQUIRE(engine.initialize<ConcurrencyTag>([](double) { return true; }));
+  const ESI::Elimination_field& field = engine.field();
+  ESI::Elimination_field by_position;
+  by_position.normals.resize(points.size());
+  by_position.scale.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    by_position.normals[indexed.input_position[i]] = field.normals[i];
+    by_position.scale[indexed.input_position[i]] = field.scale[i];
+  }
+  by_position.effective_area = field.effective_area;
+  return by_position;
+}
+
+double relative_difference(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+// Normals up to orientation, which the field does not define; everything to
+// 1e-12: the reference runs the same operations, so only a different formula
+// or a different neighbourhood can tell them apart.
+void check_same_field(const ESI::Elimination_field& package, const reference::Field& expected)
+{
+  REQUIRE(package.normals.size() == expected.normals.size());
+  double normal_difference = 0., scale_difference = 0.;
+  for (std::size_t p = 0; p < expected.normals.size(); ++p)
+  {
+    const Kernel::Vector_3 &a = package.normals[p], &b = expected.normals[p];
+    normal_difference =
+      (std::max)(normal_difference, std::sqrt((std::min)((a - b).squared_length(), (a + b).squared_length())));
+    scale_difference = (std::max)(scale_difference, relative_difference(package.scale[p], expected.scale[p]));
+  }
+  CHECK(normal_difference <= 1e-12);
+  CHECK(scale_difference <= 1e-12);
+  CHECK(relative_difference(package.effective_area, expected.effective_area) <= 1e-12);
+}
+
+// The points whose strength the coarse scale raises above the fine scale's.
+std::size_t points_raised_by_coarse_scale(const reference::Field& field)
+{
+  std::size_t raised = 0;
+  for (std::size_t p = 0; p < field.coarse_strength.size(); ++p)
+    raised += field.coarse_strength[p] > field.fine_strength[p] ? 1 : 0;
+  return raised;
+}
+
 } // namespace
 
-TEST_CASE("Default mode: the removal order equals the brute-force elimination and relocation",
-          "[default][brute force]")
+TEST_CASE("Default mode: the feature field equals the reference computed from the manual", "[default][reference]")
 {
-  const std::vector<test_clouds::Cloud> clouds = {
-    test_clouds::small_replica(160, 40, 0.002, 1), test_clouds::wavy_surface(200, 0.01, 2),
-    test_clouds::cube_volume(150, 3), test_clouds::bent_grid(14), test_clouds::with_duplicates(80, 4)
-  };
+  test_parallel::require_tbb();
+  // what the settings must cover for every piece of the field to count
+  std::size_t raised_by_coarse_scale = 0;
+  bool budget_lowered_the_weight = false, floor_at_one_degree = false;
+  for (const Setting& setting : { Setting{ board_and_ball(), 5 }, Setting{ fold(2000, 0.003, 12), 8 },
+                                  Setting{ fold(2000, 0., 13), 8 } })
+    for (double feature_weight : { 3., 0. })
+      for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
+      {
+        ES::Options options;
+        options.feature_weight = feature_weight;
+        options.normal_estimation = method;
+        INFO(setting.cloud.name << ", k = " << setting.k << ", feature weight " << feature_weight << ", normals "
+                                << int(method));
+        const reference::Field expected = reference::feature_field(setting.cloud.points, setting.k, options);
+        REQUIRE(expected.coarse_count >= setting.k + 1); // the coarse scale runs
+        raised_by_coarse_scale += points_raised_by_coarse_scale(expected);
+        budget_lowered_the_weight = budget_lowered_the_weight || expected.weight < feature_weight;
+        floor_at_one_degree = floor_at_one_degree || expected.floor == reference::noise_floor({ 0. });
+
+        check_same_field(package_field<CGAL::Sequential_tag>(setting.cloud.points, setting.k, options), expected);
+        check_same_field(test_parallel::on_two_threads_or_more([&] {
+                           return package_field<test_parallel::Parallel_tag>(setting.cloud.points, setting.k, options);
+                         }),
+                         expected);
+      }
+  CHECK(raised_by_coarse_scale > 0);
+  CHECK(budget_lowered_the_weight);
+  CHECK(floor_at_one_degree);
+}
+
+TEST_CASE("Default mode: the removal order equals the reference's, sequentially and in parallel",
+          "[default][reference]")
+{
+  test_parallel::require_tbb();
+  for (const Setting& setting : { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 } })
+    for (double feature_weight : { 3., 0. })
+      for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
+      {
+        ES::Options options;
+        options.feature_weight = feature_weight;
+        options.normal_estimation = method;
+        // several stages: 800 points to 400, 200, then 160
+        const std::size_t target = setting.cloud.points.size() / 5;
+        INFO(setting.cloud.name << ", k = " << setting.k << ", feature weight " << feature_weight << ", normals "
+                                << int(method) << ", target " << target);
+        const reference::Field field = reference::feature_field(setting.cloud.points, setting.k, options);
+        REQUIRE(field.coarse_count >= setting.k + 1);
+        const std::vector<std::size_t> expected = reference::removal_order(setting.cloud.points, field, target);
+
+        const auto np = CGAL::parameters::number_of_output_points(target);
+        const Run sequential = simplify<CGAL::Sequential_tag>(setting.cloud.points, setting.k, np, options);
+        CHECK(sequential.kept == target);
+        CHECK(removals(sequential) == expected);
+        const Run parallel = test_parallel::on_two_threads_or_more(
+          [&] { return simplify<test_parallel::Parallel_tag>(setting.cloud.points, setting.k, np, options); });
+        CHECK(removals(parallel) == expected);
+      }
+}
+
+TEST_CASE("Default mode: the removal order equals the reference's on tied distances and small clouds",
+          "[default][reference]")
+{
+  // Small clouds, below the coarse scale: a grid whose distances tie, every
+  // tie broken by input position, a volume without surface, a small surface.
+  const std::vector<test_clouds::Cloud> clouds = { test_clouds::bent_grid(14), test_clouds::cube_volume(150, 3),
+                                                   test_clouds::wavy_surface(200, 0.01, 2) };
   for (const test_clouds::Cloud& cloud : clouds)
     for (double feature_weight : { 0., 3. })
       for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
@@ -103,16 +251,17 @@ TEST_CASE("Default mode: the removal order equals the brute-force elimination an
           const std::size_t target = cloud.points.size() / divisor;
           INFO(cloud.name << ", feature weight " << feature_weight << ", normals " << int(method) << ", target "
                           << target);
-          const std::vector<std::size_t> reference = brute_force::default_mode_sequence(
-            cloud.points, k, target, options, ES::internal::relocation_iterations);
+          const std::vector<std::size_t> expected =
+            reference::removal_order(cloud.points, reference::feature_field(cloud.points, k, options), target);
           const Run run = simplify(cloud.points, k, CGAL::parameters::number_of_output_points(target), options);
           CHECK(run.kept == target);
-          CHECK(removal_order(run) == reference);
+          CHECK(removals(run) == expected);
         }
 }
 
 TEST_CASE("Default mode: exact count, a subset, nothing lost, deterministic", "[default][guarantees]")
 {
+  test_parallel::require_tbb();
   const std::vector<Point> points = test_clouds::small_replica(16000, 4000, 0.002, 5).points;
   for (std::size_t target : { std::size_t(1), std::size_t(2), std::size_t(11), std::size_t(1000),
                               std::size_t(19999), std::size_t(20000), std::size_t(50000) })
@@ -132,7 +281,9 @@ TEST_CASE("Default mode: exact count, a subset, nothing lost, deterministic", "[
   const auto np = CGAL::parameters::select_percentage(10.);
   const Run first = simplify(points, 10, np);
   CHECK(simplify(points, 10, np).order == first.order);
-  CHECK(simplify<CGAL::Parallel_if_available_tag>(points, 10, np).order == first.order);
+  const Run parallel =
+    test_parallel::on_two_threads_or_more([&] { return simplify<test_parallel::Parallel_tag>(points, 10, np); });
+  CHECK(parallel.order == first.order);
 }
 
 TEST_CASE("Default mode: the callback sees progress and can stop it", "[default][guarantees]")
@@ -219,15 +370,6 @@ TEST_CASE("Default mode: bad input gets a documented behaviour", "[default][bad 
     reversed.removal_order = ES::Removal_order::highest_entropy_first;
     reversed.reference_normal = std::array<double, 3>{ 1., 0., 0. };
     CHECK(simplify(points, 10, count(60), reversed).order == simplify(points, 10, count(60)).order);
-  }
-  SECTION("all-equal points: exact count, as the brute force")
-  {
-    // Every interaction radius is 0: ties everywhere, broken by input position.
-    const std::vector<Point> same(40, Point(1., 2., 3.));
-    const Run run = simplify(same, 5, count(12));
-    CHECK(run.kept == 12);
-    CHECK(removal_order(run) ==
-          brute_force::default_mode_sequence(same, 5, 12, ES::Options(), ES::internal::relocation_iterations));
   }
   SECTION("a collinear cloud gives a deterministic, exact-count result")
   {

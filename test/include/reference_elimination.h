@@ -1,0 +1,518 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default mode (Mode::weighted_elimination) computed from the user
+// manual's definitions with code of its own: an independent reference for the
+// package. Neighbours come from linear scans, every point's weight is summed
+// from scratch before every removal, and every nearest point of the
+// relocation is found by a scan. Of the package it uses only the public Options; of CGAL,
+// the kernel, the Hilbert sort and the jet fitting.
+//
+// Every formula runs its floating-point operations in the package's order, so
+// that the fields agree to the last bits and the removal orders exactly: a
+// last-bit difference in a scale can move a pair weight by one unit, and a
+// removal order compares sums of such weights.
+
+#ifndef ENTROPY_SIMPLIFICATION_TEST_REFERENCE_ELIMINATION_H
+#define ENTROPY_SIMPLIFICATION_TEST_REFERENCE_ELIMINATION_H
+
+#include <CGAL/Entropy_simplification/Options.h>
+
+#include <CGAL/Eigen_svd.h>
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace reference {
+
+namespace ES = CGAL::Entropy_simplification;
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+
+// Every point is named by its input position; ties in distance go to the
+// lowest one, as the manual defines every order of the package.
+using Neighbor = std::pair<double, std::size_t>; // (squared distance, input position)
+
+inline double squared_distance(const Point& a, const Point& b)
+{
+  const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// ----------------------------------------------------------------------------
+// Neighbourhoods and normals
+// ----------------------------------------------------------------------------
+
+// N(p): the k members nearest `points[p]`, `p` excluded, nearest first.
+inline std::vector<std::size_t> nearest_members(const std::vector<Point>& points,
+                                                const std::vector<std::size_t>& members, std::size_t p,
+                                                unsigned int k)
+{
+  std::vector<Neighbor> candidates;
+  for (std::size_t q : members)
+    if (q != p)
+      candidates.emplace_back(squared_distance(points[p], points[q]), q);
+  std::partial_sort(candidates.begin(), candidates.begin() + k, candidates.end());
+  std::vector<std::size_t> nearest;
+  for (unsigned int j = 0; j < k; ++j)
+    nearest.push_back(candidates[j].second);
+  return nearest;
+}
+
+// The normal of the plane fitted by least squares (Eq. 1-2): the eigenvector
+// of the least eigenvalue of the points' covariance, or the null vector when
+// the points all coincide. Eigen's closed-form 3x3 solver, which the package
+// documents as its own; CGAL's pca_estimate_normals() uses an iterative one,
+// which agrees within 1e-9 (test_feature_field.cpp).
+inline Vector least_squares_normal(const std::vector<Point>& points)
+{
+  const double m = double(points.size());
+  double cx = 0., cy = 0., cz = 0.;
+  for (const Point& p : points)
+  {
+    cx += p.x();
+    cy += p.y();
+    cz += p.z();
+  }
+  cx /= m;
+  cy /= m;
+  cz /= m;
+  double xx = 0., xy = 0., xz = 0., yy = 0., yz = 0., zz = 0.;
+  for (const Point& p : points)
+  {
+    const double dx = p.x() - cx, dy = p.y() - cy, dz = p.z() - cz;
+    xx += dx * dx;
+    xy += dx * dy;
+    xz += dx * dz;
+    yy += dy * dy;
+    yz += dy * dz;
+    zz += dz * dz;
+  }
+  if (xx + yy + zz == 0.)
+    return CGAL::NULL_VECTOR;
+  Eigen::Matrix3d covariance;
+  covariance << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  const Eigen::Vector3d normal = solver.eigenvectors().col(0); // eigenvalues in increasing order
+  return Vector(normal(0), normal(1), normal(2));
+}
+
+// The normal of a jet of degree 2 fitted at the first point, as
+// CGAL::jet_estimate_normals() computes it; the null vector when the fit
+// degenerates.
+inline Vector jet_normal(const std::vector<Point>& points)
+{
+  CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd> fitting;
+  const Vector normal = fitting(points.begin(), points.end(), 2, 1).normal_direction();
+  if (!(std::isfinite(normal.x()) && std::isfinite(normal.y()) && std::isfinite(normal.z())))
+    return CGAL::NULL_VECTOR;
+  return normal;
+}
+
+// The normal of `p`, estimated on `p` then N(p) nearest first: k + 1 points.
+inline Vector normal_at(const std::vector<Point>& points, std::size_t p, const std::vector<std::size_t>& neighbors,
+                        ES::Normal_estimation method)
+{
+  std::vector<Point> neighborhood{ points[p] };
+  for (std::size_t q : neighbors)
+    neighborhood.push_back(points[q]);
+  return method == ES::Normal_estimation::jet ? jet_normal(neighborhood) : least_squares_normal(neighborhood);
+}
+
+// ----------------------------------------------------------------------------
+// The feature signal
+// ----------------------------------------------------------------------------
+
+// The entropy (nats) of the eigenvalues of the orientation tensor of some
+// normals, the mean of n n^T over the m defined unit normals; its eigenvalues
+// sum to 1. Null normals are left out. Eigen's closed-form solver, as the
+// package: near a double zero eigenvalue its rounding (about 1e-9) puts about
+// 1e-8 into the entropy of parallel normals, where the iterative solver gives
+// 1e-16, and the field could not agree to 1e-12.
+inline double tensor_entropy(const std::vector<Vector>& normals)
+{
+  Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
+  int defined = 0;
+  for (const Vector& n : normals)
+    if (n.squared_length() > 0.)
+    {
+      const Eigen::Vector3d u = Eigen::Vector3d(n.x(), n.y(), n.z()).normalized();
+      tensor += u * u.transpose();
+      ++defined;
+    }
+  if (defined == 0)
+    return 0.;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(tensor / defined, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d mu = solver.eigenvalues();
+  double entropy = 0.;
+  for (int i = 0; i < 3; ++i)
+    if (mu(i) > 0.) // 0 log 0 = 0, and rounding may leave a tiny negative
+      entropy -= mu(i) * std::log(mu(i));
+  return entropy;
+}
+
+// The median, for an even count the upper of the two middle values (the
+// package's convention: the median is always one of the values).
+inline double median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// The noise floor: the median entropy, at least that of normals spread by
+// one degree (0.0175 rad), taken as two tensor eigenvalues of a^2/2 whose
+// terms -mu log mu are counted, the third's left out.
+inline double noise_floor(const std::vector<double>& entropy)
+{
+  const double a = 0.0175;
+  const double one_degree_spread = -2. * (a * a / 2.) * std::log(a * a / 2.);
+  return (std::max)(one_degree_spread, median(entropy));
+}
+
+// 0 up to twice the floor, 1 from ten times the floor, linear in between.
+inline double feature_strength(double entropy, double floor)
+{
+  return (std::min)(1., (std::max)(0., (entropy - 2. * floor) / (8. * floor)));
+}
+
+// The normals and entropies of one scale, by input position: each member's
+// neighbourhood is taken among the members only.
+struct Scale
+{
+  std::vector<Vector> normals;
+  std::vector<double> entropy;
+  std::vector<std::vector<std::size_t> > neighbors;
+};
+
+inline Scale scale_among(const std::vector<Point>& points, const std::vector<std::size_t>& members, unsigned int k,
+                         ES::Normal_estimation method)
+{
+  Scale scale;
+  scale.normals.assign(points.size(), CGAL::NULL_VECTOR);
+  scale.entropy.assign(points.size(), 0.);
+  scale.neighbors.resize(points.size());
+  for (std::size_t p : members)
+  {
+    scale.neighbors[p] = nearest_members(points, members, p, k);
+    scale.normals[p] = normal_at(points, p, scale.neighbors[p], method);
+  }
+  // the normals of p and N(p), in that order
+  for (std::size_t p : members)
+  {
+    std::vector<Vector> normals{ scale.normals[p] };
+    for (std::size_t q : scale.neighbors[p])
+      normals.push_back(scale.normals[q]);
+    scale.entropy[p] = tensor_entropy(normals);
+  }
+  return scale;
+}
+
+// The input positions in the Hilbert order that CGAL::spatial_sort gives,
+// called exactly as the package calls it (it shuffles with a fixed seed).
+inline std::vector<std::size_t> hilbert_order(const std::vector<Point>& points)
+{
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Point>::const_type>;
+  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+  return order;
+}
+
+// The coarse scale: every 64th point of the Hilbert order, whose spacing is
+// sqrt(64) = 8 times the input's. Its neighbourhoods need k + 1 points.
+inline std::vector<std::size_t> coarse_points(const std::vector<std::size_t>& hilbert, unsigned int k)
+{
+  std::vector<std::size_t> coarse;
+  for (std::size_t r = 0; r < hilbert.size(); r += 64)
+    coarse.push_back(hilbert[r]);
+  if (coarse.size() < std::size_t(k) + 1)
+    coarse.clear();
+  return coarse;
+}
+
+// The coarse strength of every point: that of its nearest coarse point (a
+// coarse point is its own), against the coarse points' own noise floor.
+inline std::vector<double> coarse_strength(const std::vector<Point>& points, const std::vector<std::size_t>& coarse,
+                                           unsigned int k, ES::Normal_estimation method)
+{
+  std::vector<double> strength(points.size(), 0.);
+  if (coarse.empty())
+    return strength;
+  const Scale scale = scale_among(points, coarse, k, method);
+  std::vector<double> entropy;
+  for (std::size_t c : coarse)
+    entropy.push_back(scale.entropy[c]);
+  const double floor = noise_floor(entropy);
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
+    for (std::size_t c : coarse)
+      nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[c]), c });
+    strength[p] = feature_strength(scale.entropy[nearest.second], floor);
+  }
+  return strength;
+}
+
+// ----------------------------------------------------------------------------
+// The field of the elimination
+// ----------------------------------------------------------------------------
+
+// Features may take at most 45% more points than the flat regions would: the
+// weight w is lowered until w * (sum of area * strength) <= 0.45 * area.
+inline double budgeted_weight(double feature_weight, double feature_area, double total_area)
+{
+  return feature_area > 0. ? (std::min)(feature_weight, 0.45 * total_area / feature_area) : feature_weight;
+}
+
+// The radius factor of a point: 1 / sqrt(1 + w s), so that the kept density
+// grows by up to 1 + w on features, times the cube root of its share of the
+// area over the median share, within a factor 2, so that the kept density
+// follows the input's to the power 2/3.
+inline double radius_factor(double strength, double weight, double area, double typical_area)
+{
+  const double density = typical_area > 0. ? (std::min)(2., (std::max)(0.5, std::cbrt(area / typical_area))) : 1.;
+  return 1. / std::sqrt(1. + weight * strength) * density;
+}
+
+// Everything by input position; the pieces after `effective_area` are there
+// for the tests to check what the field is made of.
+struct Field
+{
+  std::vector<Vector> normals;
+  std::vector<double> scale;
+  double effective_area = 0.; // the area, each point's share divided by its scale squared
+  std::vector<double> fine_strength, coarse_strength;
+  std::size_t coarse_count = 0; // 0 when the cloud is too small for the coarse scale
+  double floor = 0.;            // the noise floor of the fine scale
+  double weight = 0.;           // the feature weight after the budget
+};
+
+inline Field feature_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options)
+{
+  const std::size_t n = points.size();
+  std::vector<std::size_t> all(n);
+  std::iota(all.begin(), all.end(), std::size_t(0));
+  const Scale fine = scale_among(points, all, k, options.normal_estimation);
+  const std::vector<std::size_t> hilbert = hilbert_order(points);
+  const std::vector<std::size_t> coarse = coarse_points(hilbert, k);
+
+  Field field;
+  field.normals = fine.normals;
+  field.coarse_count = coarse.size();
+  field.coarse_strength = coarse_strength(points, coarse, k, options.normal_estimation);
+  field.floor = noise_floor(fine.entropy);
+  std::vector<double> area(n), strength(n);
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    // p's share of the area: k points in the disc reaching its k-th neighbour
+    area[p] = CGAL_PI * squared_distance(points[p], points[fine.neighbors[p][k - 1]]) / double(k);
+    field.fine_strength.push_back(feature_strength(fine.entropy[p], field.floor));
+    strength[p] = (std::max)(field.fine_strength[p], field.coarse_strength[p]);
+  }
+  // Summed in the package's internal order, the Hilbert order, so that the
+  // rounding of the sums, hence the budget, is the same.
+  double total_area = 0., feature_area = 0.;
+  for (std::size_t p : hilbert)
+  {
+    total_area += area[p];
+    feature_area += area[p] * strength[p];
+  }
+  field.weight = budgeted_weight(options.feature_weight, feature_area, total_area);
+  const double typical_area = median(area);
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    field.scale.push_back(radius_factor(strength[p], field.weight, area[p], typical_area));
+    field.effective_area += area[p] / (field.scale[p] * field.scale[p]);
+  }
+  return field;
+}
+
+// ----------------------------------------------------------------------------
+// Weighted sample elimination (Yuksel 2015), in stages
+// ----------------------------------------------------------------------------
+
+struct Stage
+{
+  std::size_t target;
+  double radius; // of a hexagonal packing of `target` points on the effective area
+  double limit;  // Yuksel's weight limiting
+};
+
+// Each stage halves the count, the last one reaching the target.
+inline Stage stage_from(std::size_t present, std::size_t target, double effective_area)
+{
+  Stage stage;
+  stage.target = (std::max)(target, (present + 1) / 2);
+  stage.radius = std::sqrt(effective_area / (2. * std::sqrt(3.) * double(stage.target)));
+  stage.limit = stage.radius * 0.65 * (1. - std::pow(double(stage.target) / double(present), 1.5));
+  return stage;
+}
+
+// (1 - d / 2r s)^8 within 2 r s, s the mean of the two scales, d not below
+// the limit times s; in units of 2^-40, so that sums are exact in any order.
+inline std::int64_t pair_weight(const Point& a, const Point& b, double scale_a, double scale_b, const Stage& stage)
+{
+  const double reach = stage.radius * (scale_a + scale_b);
+  const double d = std::sqrt(squared_distance(a, b));
+  if (d >= reach)
+    return 0;
+  const double floor = stage.limit * (scale_a + scale_b) / 2.;
+  return std::llround(std::pow(1. - (std::max)(d, floor) / reach, 8) * std::ldexp(1., 40));
+}
+
+// The weight of every pair of distinct points in a stage, row by row: the
+// weights do not change within a stage.
+inline std::vector<std::int64_t> pair_weights(const std::vector<Point>& points, const std::vector<double>& scale,
+                                              const Stage& stage)
+{
+  const std::size_t n = points.size();
+  std::vector<std::int64_t> weights(n * n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i)
+        weights[i * n + j] = pair_weight(points[i], points[j], scale[i], scale[j], stage);
+  return weights;
+}
+
+// The present point of greatest weight, ties to the lowest input position,
+// every point's weight summed from scratch over the present points.
+inline std::size_t most_crowded(const std::vector<std::int64_t>& weights, const std::vector<bool>& present)
+{
+  const std::size_t n = present.size();
+  std::vector<std::size_t> members;
+  for (std::size_t i = 0; i < n; ++i)
+    if (present[i])
+      members.push_back(i);
+  std::size_t best = n;
+  std::int64_t best_weight = 0;
+  for (std::size_t i : members)
+  {
+    std::int64_t weight = 0;
+    for (std::size_t j : members)
+      weight += weights[i * n + j];
+    if (best == n || weight > best_weight)
+    {
+      best = i;
+      best_weight = weight;
+    }
+  }
+  return best;
+}
+
+// The input positions of the removed points, first removed first.
+inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, const Field& field, std::size_t target)
+{
+  std::vector<bool> present(points.size(), true);
+  std::size_t count = points.size();
+  std::vector<std::size_t> removed;
+  while (count > target)
+  {
+    const Stage stage = stage_from(count, target, field.effective_area);
+    const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
+    for (; count > stage.target; --count)
+    {
+      const std::size_t p = most_crowded(weights, present);
+      present[p] = false;
+      removed.push_back(p);
+    }
+  }
+  return removed;
+}
+
+// ----------------------------------------------------------------------------
+// Lloyd's relaxation restricted to the input points
+// ----------------------------------------------------------------------------
+
+// The present point nearest `points[p]`, itself when present.
+inline std::size_t nearest_present(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t p)
+{
+  if (present[p])
+    return p;
+  Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
+  for (std::size_t q = 0; q < points.size(); ++q)
+    if (present[q])
+      nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[q]), q });
+  return nearest.second;
+}
+
+// One iteration: every input point joins the cell of its nearest present
+// point, and each cell keeps its member nearest the cell's centroid. Sums and
+// scans run in input order.
+inline std::vector<bool> lloyd_step(const std::vector<Point>& points, const std::vector<bool>& present)
+{
+  const std::size_t n = points.size();
+  std::vector<std::size_t> cell(n);
+  std::vector<std::array<double, 4> > sum(n, { 0., 0., 0., 0. }); // x, y, z, count
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    cell[p] = nearest_present(points, present, p);
+    sum[cell[p]][0] += points[p].x();
+    sum[cell[p]][1] += points[p].y();
+    sum[cell[p]][2] += points[p].z();
+    sum[cell[p]][3] += 1.;
+  }
+  // the member nearest the centroid of each cell
+  std::vector<Neighbor> best(n, Neighbor{ std::numeric_limits<double>::infinity(), n });
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const std::array<double, 4>& s = sum[cell[p]];
+    const Point centroid(s[0] / s[3], s[1] / s[3], s[2] / s[3]);
+    best[cell[p]] = (std::min)(best[cell[p]], Neighbor{ squared_distance(points[p], centroid), p });
+  }
+  std::vector<bool> relocated(n, false);
+  for (std::size_t c = 0; c < n; ++c)
+    if (present[c])
+      relocated[best[c].second] = true;
+  return relocated;
+}
+
+// ----------------------------------------------------------------------------
+// The default mode
+// ----------------------------------------------------------------------------
+
+// The removal order of the default mode down to `target` points, on the
+// `field` of the points: the elimination's, then two iterations of
+// relocation; the j-th point the relocation drops takes the place, in the
+// removal order, of the j-th point it brings in, both in input order.
+inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, const Field& field,
+                                              std::size_t target)
+{
+  std::vector<std::size_t> removed = eliminate(points, field, target);
+  std::vector<bool> eliminated(points.size(), true);
+  for (std::size_t p : removed)
+    eliminated[p] = false;
+  std::vector<bool> relocated = eliminated;
+  for (int iteration = 0; iteration < 2; ++iteration)
+    relocated = lloyd_step(points, relocated);
+  std::vector<std::size_t> gone, come;
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    if (eliminated[p] && !relocated[p])
+      gone.push_back(p);
+    if (!eliminated[p] && relocated[p])
+      come.push_back(p);
+  }
+  for (std::size_t j = 0; j < gone.size(); ++j)
+    *std::find(removed.begin(), removed.end(), come[j]) = gone[j];
+  return removed;
+}
+
+} // namespace reference
+
+#endif // ENTROPY_SIMPLIFICATION_TEST_REFERENCE_ELIMINATION_H
