@@ -9,6 +9,7 @@
 
 #include "reference_elimination.h"
 #include "require_tbb.h"
+#include "simplification_run.h"
 #include "test_clouds.h"
 
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
@@ -31,49 +32,17 @@ namespace ES = CGAL::Entropy_simplification;
 namespace ESI = CGAL::Entropy_simplification::internal;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
-using Indexed = std::pair<Point, std::size_t>;
-using Point_of = CGAL::First_of_pair_property_map<Indexed>;
 
 namespace {
 
-// The input positions of the range after a call, and where the kept points end.
-struct Run
-{
-  std::vector<std::size_t> order;
-  std::size_t kept = 0;
-};
+using test_runs::Run;
+using test_runs::simplify;
 
-template <typename Tag = CGAL::Sequential_tag, typename NP>
-Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = {})
-{
-  std::vector<Indexed> range;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    range.emplace_back(points[i], i);
-  const auto it = CGAL::entropy_simplify_point_set<Tag>(range, k, np.point_map(Point_of()), options);
-  Run run;
-  run.kept = std::size_t(it - range.begin());
-  for (const Indexed& e : range)
-  {
-    REQUIRE(e.first == points[e.second]);
-    run.order.push_back(e.second);
-  }
-  return run;
-}
-
-// The input positions of the removed points, first removed first.
-std::vector<std::size_t> removals(const Run& run)
-{
-  return std::vector<std::size_t>(run.order.rbegin(), run.order.rend() - std::ptrdiff_t(run.kept));
-}
+std::vector<std::size_t> removals(const Run& run) { return test_runs::removal_order(run); }
 
 bool is_permutation(const Run& run, std::size_t n)
 {
-  std::vector<std::size_t> sorted = run.order;
-  std::sort(sorted.begin(), sorted.end());
-  for (std::size_t i = 0; i < sorted.size(); ++i)
-    if (sorted[i] != i)
-      return false;
-  return sorted.size() == n;
+  return run.order.size() == n && test_runs::is_permutation_of_input(run);
 }
 
 // The largest distance from an input point to its nearest kept point.

@@ -85,8 +85,8 @@ TEST_CASE("Copies go first, the last first: the distinct points simplify as if a
     {
       INFO("mode " << int(mode) << ", target " << target);
       const auto count = CGAL::parameters::number_of_output_points(target);
-      const Run alone = test_runs::simplify(distinct, 10, count, options_of(mode));
-      const Run with_copies = test_runs::simplify(cloud.points, 10, count, options_of(mode));
+      const Run alone = test_runs::simplify_with_normals(distinct, 10, count, options_of(mode));
+      const Run with_copies = test_runs::simplify_with_normals(cloud.points, 10, count, options_of(mode));
 
       std::vector<std::size_t> expected(cloud.copies.rbegin(), cloud.copies.rend());
       for (std::size_t i : test_runs::removal_order(alone))
@@ -110,7 +110,7 @@ TEST_CASE("Copies come back in input order once every distinct point is kept", "
     INFO("mode " << int(mode));
     const std::size_t target = distinct.size() + 3;
     const Run run =
-      test_runs::simplify(cloud.points, 10, CGAL::parameters::number_of_output_points(target), options_of(mode));
+      test_runs::simplify_with_normals(cloud.points, 10, CGAL::parameters::number_of_output_points(target), options_of(mode));
     REQUIRE(run.kept == target);
     std::set<std::size_t> expected(cloud.first.begin(), cloud.first.end());
     expected.insert(cloud.copies.begin(), cloud.copies.begin() + 3);
@@ -142,7 +142,7 @@ TEST_CASE("Points 1e-12 apart are distinct, and fewer than k + 1 distinct points
     INFO("mode " << int(mode));
     const auto count = CGAL::parameters::number_of_output_points(11);
     // 12 distinct points: k = 10 has its neighbours
-    CHECK(test_runs::simplify(near, 10, count, options_of(mode)).kept == 11);
+    CHECK(test_runs::simplify_with_normals(near, 10, count, options_of(mode)).kept == 11);
     std::vector<Point> range = equal;
     CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(range, 10, count, options_of(mode)),
                       Catch::Contains("at least k + 1 distinct points; the range has 6 (of 12 points)"));
@@ -159,7 +159,7 @@ TEST_CASE("200,000 copies of one point among 20,000: an exact count, at most one
   {
     INFO("mode " << int(mode));
     const Run run =
-      test_runs::simplify(points, 10, CGAL::parameters::number_of_output_points(2000), options_of(mode));
+      test_runs::simplify_with_normals(points, 10, CGAL::parameters::number_of_output_points(2000), options_of(mode));
     REQUIRE(run.kept == 2000);
     CHECK(test_runs::is_permutation_of_input(run));
     std::size_t copies_kept = 0;

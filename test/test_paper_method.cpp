@@ -8,6 +8,7 @@
 
 #include "brute_force_reference.h"
 #include "require_tbb.h"
+#include "simplification_run.h"
 #include "test_clouds.h"
 
 #include <CGAL/Entropy_simplification/compute_mean_normal_angle_entropy.h>
@@ -30,8 +31,6 @@ namespace ES = CGAL::Entropy_simplification;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
-using Indexed = std::pair<Point, std::size_t>;
-using Point_of = CGAL::First_of_pair_property_map<Indexed>;
 using ES::internal::Angle_term;
 
 namespace {
@@ -43,51 +42,18 @@ ES::Options paper_mode()
   return options;
 }
 
-std::vector<Indexed> with_positions(const std::vector<Point>& points)
-{
-  std::vector<Indexed> result;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    result.emplace_back(points[i], i);
-  return result;
-}
-
-struct Run
-{
-  std::vector<Indexed> range;    // the range after the call
-  std::size_t kept = 0;          // position of the returned iterator
-  std::vector<std::size_t> removal_order; // input positions, first removed first
-};
+using test_runs::kept_positions;
+using test_runs::Run;
 
 template <typename Tag = CGAL::Sequential_tag, typename NP>
 Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = paper_mode())
 {
-  Run run;
-  run.range = with_positions(points);
-  const auto it = CGAL::entropy_simplify_point_set<Tag>(run.range, k, np.point_map(Point_of()), options);
-  run.kept = std::size_t(it - run.range.begin());
-  for (std::size_t j = run.range.size(); j-- > run.kept;)
-    run.removal_order.push_back(run.range[j].second);
-  return run;
-}
-
-std::set<std::size_t> kept_positions(const Run& run)
-{
-  std::set<std::size_t> kept;
-  for (std::size_t j = 0; j < run.kept; ++j)
-    kept.insert(run.range[j].second);
-  return kept;
+  return test_runs::simplify<Tag>(points, k, np, options);
 }
 
 bool is_permutation_of_input(const Run& run, const std::vector<Point>& points)
 {
-  std::vector<bool> seen(points.size(), false);
-  for (const Indexed& e : run.range)
-  {
-    if (e.second >= points.size() || seen[e.second] || e.first != points[e.second])
-      return false;
-    seen[e.second] = true;
-  }
-  return run.range.size() == points.size();
+  return run.order.size() == points.size() && test_runs::is_permutation_of_input(run);
 }
 
 double entropy_of(const std::vector<double>& angles)
@@ -286,7 +252,7 @@ TEST_CASE("The removed points come last removed first: every prefix is a simplif
     const Run direct = simplify(points, 10, CGAL::parameters::number_of_output_points(m));
     std::set<std::size_t> prefix;
     for (std::size_t j = 0; j < m; ++j)
-      prefix.insert(deep.range[j].second);
+      prefix.insert(deep.order[j]);
     INFO("m = " << m);
     CHECK(prefix == kept_positions(direct));
   }
@@ -338,8 +304,8 @@ TEST_CASE("Results are deterministic, and the same sequentially and in parallel"
   const Run again = simplify<CGAL::Sequential_tag>(points, 10, np);
   const Run parallel =
     test_parallel::on_two_threads_or_more([&] { return simplify<test_parallel::Parallel_tag>(points, 10, np); });
-  CHECK(first.range == again.range);
-  CHECK(first.range == parallel.range);
+  CHECK(first.order == again.order);
+  CHECK(first.order == parallel.order);
 }
 
 TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
@@ -460,7 +426,7 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
     const Run once = simplify(line, 10, count(30));
     const Run twice = simplify(line, 10, count(30));
     CHECK(once.kept == 30);
-    CHECK(once.range == twice.range);
+    CHECK(once.order == twice.order);
     CHECK(is_permutation_of_input(once, line));
   }
 }

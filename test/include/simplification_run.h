@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 #include <vector>
 
@@ -31,19 +32,21 @@ struct Run
 };
 
 // Calls the function on (point, input position, normal) records, with the
-// point map and the normal map added to `np`; checks that every record kept
-// its own point.
-template <typename Tag = CGAL::Sequential_tag, typename NP>
-Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = {})
+// point map added to `np`, and the normal map when `with_normals`; checks
+// that every record kept its own point.
+template <typename Tag, typename NP>
+Run run_on_records(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options,
+                   bool with_normals)
 {
   using Record = std::tuple<Point, std::size_t, Vector>;
   std::vector<Record> range;
   for (std::size_t i = 0; i < points.size(); ++i)
     range.emplace_back(points[i], i, CGAL::NULL_VECTOR);
-  const auto it = CGAL::entropy_simplify_point_set<Tag>(
-    range, k,
-    np.point_map(CGAL::Nth_of_tuple_property_map<0, Record>()).normal_map(CGAL::Nth_of_tuple_property_map<2, Record>()),
-    options);
+  const auto with_points = np.point_map(CGAL::Nth_of_tuple_property_map<0, Record>());
+  const auto it = with_normals ? CGAL::entropy_simplify_point_set<Tag>(
+                                   range, k, with_points.normal_map(CGAL::Nth_of_tuple_property_map<2, Record>()),
+                                   options)
+                               : CGAL::entropy_simplify_point_set<Tag>(range, k, with_points, options);
   Run run;
   run.kept = std::size_t(it - range.begin());
   run.normals.assign(points.size(), CGAL::NULL_VECTOR);
@@ -55,6 +58,20 @@ Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, con
     run.normals[std::get<1>(r)] = std::get<2>(r);
   }
   return run;
+}
+
+template <typename Tag = CGAL::Sequential_tag, typename NP>
+Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = {})
+{
+  return run_on_records<Tag>(points, k, np, options, false);
+}
+
+// The same, with the normals written to `Run::normals`.
+template <typename Tag = CGAL::Sequential_tag, typename NP>
+Run simplify_with_normals(const std::vector<Point>& points, unsigned int k, const NP& np,
+                          const ES::Options& options = {})
+{
+  return run_on_records<Tag>(points, k, np, options, true);
 }
 
 // The input positions of the removed points, first removed first.
