@@ -32,12 +32,11 @@
 
 #include "bench_common.h"
 #include "bench_machine.h"
+#include "bench_process.h"
 
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
 
 #include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -196,50 +195,9 @@ Result measure(const Case& c, int runs)
 // Runs `measure` in a child process.
 void run_case(Case& c, int runs)
 {
-  int pipe_ends[2];
-  if (pipe(pipe_ends) != 0)
-    throw std::runtime_error("pipe failed");
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t pid = fork();
-  if (pid < 0)
-    throw std::runtime_error("fork failed");
-  if (pid == 0)
-  {
-    close(pipe_ends[0]);
-    Result r;
-    try
-    {
-      r = measure(c, runs);
-    }
-    catch (const std::exception& e)
-    {
-      std::snprintf(r.failures, sizeof r.failures, "exception: %s", e.what());
-    }
-    const bool written = write(pipe_ends[1], &r, sizeof r) == ssize_t(sizeof r);
-    _exit(written ? EXIT_SUCCESS : EXIT_FAILURE);
-  }
-  close(pipe_ends[1]);
-  std::size_t got = 0;
-  while (got < sizeof c.result)
-  {
-    const ssize_t n = read(pipe_ends[0], reinterpret_cast<char*>(&c.result) + got, sizeof c.result - got);
-    if (n > 0)
-      got += std::size_t(n);
-    else if (n == 0 || errno != EINTR)
-      break;
-  }
-  close(pipe_ends[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR)
-      throw std::runtime_error("waitpid failed");
-  if (WIFSIGNALED(status))
-    c.verdict = "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
-  else if (got != sizeof c.result)
-    c.verdict = "no result (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
-  else
-    c.verdict = c.result.failures[0] ? c.result.failures : "ok";
+  const bench::Child_outcome<Result> outcome = bench::run_in_child<Result>([&] { return measure(c, runs); });
+  c.result = outcome.result;
+  c.verdict = outcome.verdict;
 }
 
 // --- the report ------------------------------------------------------------
@@ -338,15 +296,11 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Group>& g
                      const std::string& command, double minutes, const std::string& load)
 {
   std::ostringstream s;
-  const std::time_t now = std::time(nullptr);
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
   s << "## Coincident points\n\n"
-    << "Produced by `" << command << "` on " << date << " in " << fixed(minutes, 1)
-    << " minutes: the target `bench_duplicates` of a build with `ENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS` or "
-       "`ENTROPY_SIMPLIFICATION_BUILD_TESTS` on; `bash benchmark/run.sh` runs it after the rest.\n\n"
-    << "Machine: " << bench::machine_description() << "; load average " << load
-    << " at the start (other processes shared the cores if above 1).\n\n"
+    << bench::produced_by(command, minutes,
+                          ": the target `bench_duplicates` of a build with `ENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS` "
+                          "or `ENTROPY_SIMPLIFICATION_BUILD_TESTS` on; `bash benchmark/run.sh` runs it after the rest",
+                          load)
     << "`CGAL::entropy_simplify_point_set` with k = " << k
     << ", `Sequential_tag`, in each mode, on planes (uniform over the unit square, Gaussian noise of 5% of the mean "
        "spacing along z, seed "
@@ -369,41 +323,6 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Group>& g
   std::string text = s.str();
   text.pop_back(); // one newline at the end
   return text;
-}
-
-// Replaces the section "## Coincident points" of `file`, up to the next
-// section of the same level, or appends it.
-void write_section(const std::string& file, const std::string& section)
-{
-  std::ifstream in(file);
-  if (!in)
-    throw std::runtime_error("cannot read " + file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  const std::size_t start = text.rfind("\n## Coincident points\n");
-  if (start == std::string::npos)
-    text += (text.empty() || text.back() == '\n' ? "\n" : "\n\n") + section;
-  else
-  {
-    const std::size_t end = text.find("\n## ", start + 1);
-    text.replace(start + 1, end == std::string::npos ? std::string::npos : end + 1 - (start + 1),
-                 section + (end == std::string::npos ? "" : "\n"));
-  }
-  const std::string temporary = file + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!(out << text))
-      throw std::runtime_error("cannot write " + temporary);
-  }
-  if (std::rename(temporary.c_str(), file.c_str()) != 0)
-    throw std::runtime_error("cannot replace " + file);
-}
-
-std::string load_average() // over the last minute
-{
-  std::ifstream in("/proc/loadavg");
-  std::string first;
-  return in >> first ? first : std::string("unknown");
 }
 
 int usage()
@@ -477,7 +396,7 @@ int main(int argc, char** argv)
           add(groups[i].reference, 0);
       }
 
-    const std::string load = load_average();
+    const std::string load = bench::load_average();
     const auto start = std::chrono::steady_clock::now();
     bool failed = false;
     for (Case& c : cases)
@@ -492,7 +411,7 @@ int main(int argc, char** argv)
     const std::string section = markdown(cases, groups, runs, command, minutes, load);
     std::cout << section;
     if (!append.empty())
-      write_section(append, section);
+      bench::write_section(append, "## Coincident points", section);
     if (failed)
       std::cerr << "bench_duplicates: an invariant failed" << std::endl;
     return failed ? EXIT_FAILURE : EXIT_SUCCESS;

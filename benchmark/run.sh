@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The benchmark's one command. Builds it (-O3 -DNDEBUG), runs every method on
 # every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
-# figures), then the section "Coincident points" of RESULTS.md
-# (bench_duplicates). With --quick: smaller inputs, a couple of minutes,
+# figures), then the sections "Coincident points" (bench_duplicates) and
+# "Scale" (bench_scale, 100k to 10M points, about 15 minutes) of RESULTS.md. With --quick: smaller inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.
 set -euo pipefail
@@ -17,13 +17,18 @@ if [ "$mode" = "--quick" ]; then out=build-benchmark/quick; fi
 command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (apt-get install gnuplot-nox)" >&2; exit 1; }
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
-  -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=OFF -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
-cmake --build build-benchmark --target run_benchmark bench_duplicates -j"$(nproc)"
+  -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=ON -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
+cmake --build build-benchmark --target run_benchmark bench_duplicates bench_scale entropy_simplify -j"$(nproc)"
 mkdir -p "$out/results"
 rm -f "$out"/results/*.png "$out"/results/points/*.txt
 build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
-(cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
 # Coincident points: one process per case, its section appended to RESULTS.md
 # (--smoke with --quick: the smaller cases, without the 220k reference).
 build-benchmark/benchmark/bench_duplicates ${mode:+--smoke} --append "$out/RESULTS.md"
+# Scale: the inputs are written once to build-benchmark/scale (about 170 MB of
+# lion samples up to 10M points); --quick stops at 300k points.
+build-benchmark/benchmark/bench_scale --data build-benchmark/cgal_data/data --work build-benchmark/scale \
+  --program build-benchmark/examples/entropy_simplify --out "$out" \
+  ${mode:+--sizes 100000,300000 --runs 1}
+(cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
 echo "benchmark/run.sh: wrote $out/RESULTS.md"
