@@ -37,7 +37,7 @@ struct Timing
 struct Method
 {
   std::string name;
-  std::string family; // "package", "paper baseline" or "CGAL"
+  std::string family; // "package", "paper baseline", or a peer library: "CGAL", "PCL", "Open3D"
   // the method's result with exactly m points
   std::function<Selection(std::size_t m)> select;
   // for a progressive method: all points, ordered so that every prefix of at
@@ -47,7 +47,20 @@ struct Method
   std::function<Timing(std::size_t m, const std::vector<double>& parameters)> timed_run;
   // a rough prediction of one run's seconds, to skip what would not fit
   std::function<double(std::size_t m)> predicted_seconds;
+  // false when `select` finds no parameter for `timed_run`: a ratio that is
+  // timed but not measured (timing_1M) then needs no `select` run (the
+  // package's methods keep the run they always had)
+  bool searches_parameters = true;
 };
+
+// A run of `f`, timed as a whole (no normal-estimation part).
+inline Timing timed(const std::function<void()>& f)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+  f();
+  return Timing{ timer.time(), 0. };
+}
 
 inline std::vector<Indexed_point> indexed(const Cloud& cloud)
 {
@@ -138,6 +151,45 @@ private:
   std::vector<double> m_sigma;
   std::vector<Index> m_by_decreasing_sigma;
 };
+
+// A result made of new points (WLOP's, voxel centroids): each labelled like
+// its nearest input point.
+inline Selection labelled_new_points(const Method_context& context, std::vector<Point> points)
+{
+  Selection s;
+  s.points = std::move(points);
+  s.count_before_trim = s.points.size();
+  std::vector<Index> near;
+  for (const Point& p : s.points)
+  {
+    context.tree.nearest(p, 1, near); // on unlabelled inputs too, as WLOP's timing always included it
+    if (!context.cloud.labels.empty())
+      s.labels.push_back(context.cloud.labels[near[0]]);
+  }
+  return s;
+}
+
+// reach_count for a method whose output is new points (at most one per input
+// point) and whose count decreases as its size parameter grows: the same
+// search, and the same trim applied to the positions of the output points;
+// then one more run at the parameter found gives the points.
+inline Selection reach_count_new_points(const Method_context& context, std::size_t m, double low, double high,
+                                        const std::function<std::vector<Point>(double)>& run)
+{
+  const Selection positions = reach_count(context.cloud, m, low, high, [&](double p) {
+    std::vector<Index> all(run(p).size());
+    std::iota(all.begin(), all.end(), Index(0));
+    return all;
+  });
+  const std::vector<Point> out = run(positions.parameters[0]);
+  std::vector<Point> kept;
+  for (Index i : positions.indices)
+    kept.push_back(out[i]);
+  Selection s = labelled_new_points(context, std::move(kept));
+  s.count_before_trim = positions.count_before_trim;
+  s.parameters = positions.parameters;
+  return s;
+}
 
 inline std::vector<Method> all_methods(Method_context& context)
 {
@@ -280,19 +332,7 @@ inline std::vector<Method> all_methods(Method_context& context)
         copy, std::back_inserter(out), CGAL::parameters::select_percentage(100. * (double(m) + 0.5) / double(n)));
       return out;
     };
-    wlop.select = [&context, run](std::size_t m) {
-      Selection s;
-      s.points = run(m);
-      s.count_before_trim = s.points.size();
-      std::vector<Index> near;
-      for (const Point& p : s.points)
-      {
-        context.tree.nearest(p, 1, near);
-        if (!context.cloud.labels.empty())
-          s.labels.push_back(context.cloud.labels[near[0]]);
-      }
-      return s;
-    };
+    wlop.select = [&context, run](std::size_t m) { return labelled_new_points(context, run(m)); };
     wlop.timed_run = [timed, run](std::size_t m, const std::vector<double>&) { return timed([&] { run(m); }); };
     // about 2.9e-8 s per input point and output point on the machine of the
     // RESULTS, measured on b9_training at 10%

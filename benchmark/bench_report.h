@@ -64,6 +64,8 @@ struct Report
   bool quick = false;
   int repeats = 3;
   double skip_seconds = 0., total_seconds = 0.;
+  // the optional peer families (benchmark/CMakeLists.txt), each described
+  std::vector<std::string> peers_built, peers_not_built;
 };
 
 inline std::string file_name(const std::string& method)
@@ -120,6 +122,33 @@ inline std::vector<std::string> methods_of(const Report& r)
   return names;
 }
 
+// The family a method was registered with ("package", "paper baseline",
+// "CGAL", "PCL", "Open3D"), or "" if it has no quality row.
+inline std::string family_of(const Report& r, const std::string& method)
+{
+  for (const Quality_row& q : r.quality)
+    if (q.method == method)
+      return q.family;
+  return "";
+}
+
+// The simplifiers of other libraries a user would pick instead of the
+// package: CGAL's, and PCL's and Open3D's where they were built.
+inline bool is_library_peer(const Report& r, const std::string& method)
+{
+  const std::string family = family_of(r, method);
+  return family == "CGAL" || family == "PCL" || family == "Open3D";
+}
+
+inline std::vector<std::string> library_peers(const Report& r)
+{
+  std::vector<std::string> peers;
+  for (const std::string& m : methods_of(r))
+    if (is_library_peer(r, m))
+      peers.push_back(m);
+  return peers;
+}
+
 inline std::vector<double> ratios_of(const Report& r, const std::string& input)
 {
   std::set<double> s;
@@ -160,7 +189,8 @@ inline void write_csv(const Report& r, const std::string& dir)
 inline std::string line_style(const std::vector<std::string>& methods, std::size_t m)
 {
   static const char* const colours[] = { "#d62728", "#ff7f0e", "#1f77b4", "#17becf", "#2ca02c", "#bcbd22",
-                                         "#000000", "#7f7f7f", "#9467bd", "#e377c2", "#8c564b", "#aec7e8" };
+                                         "#000000", "#7f7f7f", "#9467bd", "#e377c2", "#8c564b", "#aec7e8",
+                                         "#98df8a", "#ff9896", "#c5b0d5", "#c49c94", "#dbdb8d", "#9edae5" };
   const bool package = methods[m].rfind("entropy", 0) == 0;
   std::ostringstream s;
   s << "with linespoints lw " << (package ? 3 : 1.5) << " pt " << (m % 13) + 1 << " lc rgb '"

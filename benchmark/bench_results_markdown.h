@@ -83,12 +83,33 @@ inline void quality_table(std::ostream& md, const Report& r, const std::string& 
   md << "\n";
 }
 
+// Whether a method has a row (it was built and ran somewhere).
+inline bool find_peer(const Report& r, const std::string& method)
+{
+  return !family_of(r, method).empty();
+}
+
+// The methods whose output is new points, which Tables 2 and 3 label by the
+// nearest input point.
+inline std::string new_point_methods(const Report& r)
+{
+  std::string s = "WLOP moves points";
+  if (find_peer(r, "PCL voxel grid") || find_peer(r, "Open3D voxel down-sample"))
+    s = std::string("WLOP moves points, and ") +
+        (find_peer(r, "PCL voxel grid") && find_peer(r, "Open3D voxel down-sample")
+           ? "PCL's voxel grid and Open3D's voxel down-sample keep"
+           : find_peer(r, "PCL voxel grid") ? "PCL's voxel grid keeps" : "Open3D's voxel down-sample keeps") +
+        " the centroids of voxels";
+  return s;
+}
+
 // For each peer, the cells (input, ratio) where a package method is better
 // on a metric.
 inline void peer_summary(std::ostream& md, const Report& r, const std::string& ours)
 {
-  const std::vector<std::string> peers = { "CGAL grid", "CGAL hierarchy", "CGAL WLOP", "CGAL random",
-                                           "equidistant E2 (spacing)", "curvature" };
+  std::vector<std::string> peers = library_peers(r);
+  peers.push_back("equidistant E2 (spacing)");
+  peers.push_back("curvature");
   md << "| `" << ours << "` against | mean distance: better in | Hausdorff: better in | point-to-plane: better in |"
      << " median ratio of mean distances (ours / peer) |\n|---|---:|---:|---:|---:|\n";
   for (const std::string& peer : peers)
@@ -158,8 +179,18 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
      << "The paper's mode is progressive: one run to the smallest ratio serves every ratio; the default mode runs "
         "once per ratio. All distances are divided by the diagonal of the input's bounding box. Times are medians of "
      << r.repeats << " runs; speed is given as the ratio to one sequential pass of `CGAL::pca_estimate_normals` "
-     << "(k = 10) on the same input in the same run. Cells where WLOP was predicted to take more than "
-     << fixed(r.skip_seconds, 0) << " s are skipped and listed at the end. Definitions: `benchmark/README.md`.\n\n";
+     << "(k = 10) on the same input in the same run. Cells where WLOP" << (find_peer(r, "Open3D farthest point")
+                                                                              ? " or Open3D's farthest point sampling"
+                                                                              : "")
+     << " was predicted to take more than " << fixed(r.skip_seconds, 0)
+     << " s are skipped and listed at the end. Definitions: `benchmark/README.md`.\n\n";
+  md << "Peers: CGAL 5.5's simplifiers (always built)";
+  for (const std::string& p : r.peers_built)
+    md << "; " << p;
+  md << ".";
+  for (const std::string& p : r.peers_not_built)
+    md << " Not built: " << p << ", which CMake did not find; its methods are absent from every table.";
+  md << "\n\n";
 
   md << "## Inputs\n\n| input | description | points | pca_estimate_normals (s) |\n|---|---|---:|---:|\n";
   for (const Input_summary& s : r.inputs)
@@ -167,6 +198,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
        << (s.held_out ? " (held out)" : "") << " |\n";
   md << "\n";
   write_targets(md, r);
+  write_best_peer(md, r);
 
   // ---------------------------------------------------------------- Experiment I
   std::vector<const Input_summary*> replicas;
@@ -201,7 +233,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
            << percent(double(paper::table2[p][2]) / double(paper::table2[p][0])) << " |\n";
       }
     for (const std::string& m : methods_of(r))
-      if (m.rfind("CGAL", 0) == 0 || m == "package default" || m == "default without entropy term")
+      if (is_library_peer(r, m) || m == "package default" || m == "default without entropy term")
       {
         md << "| " << m << " |";
         for (const Input_summary* s : replicas)
@@ -236,7 +268,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
         md << ' ' << fixed(paper::table3[p][0], 4) << " | " << fixed(paper::table3[p][1], 4) << " |\n";
       }
     for (const std::string& m : methods_of(r))
-      if (m.rfind("CGAL", 0) == 0 || m == "package default" || m == "default without entropy term")
+      if (is_library_peer(r, m) || m == "package default" || m == "default without entropy term")
       {
         md << "| " << m << " |";
         for (const Input_summary* s : replicas)
@@ -246,8 +278,8 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
             md << " skipped | |";
         md << " | |\n";
       }
-    md << "\nWLOP moves points: its ball and board points are those whose nearest input point is on the ball or "
-          "the board.\n\n";
+    md << "\n" << new_point_methods(r)
+       << ": the ball and board points are those whose nearest input point is on the ball or the board.\n\n";
 
     md << "### Table 1: time to keep 10%, in seconds and as a ratio to pca_estimate_normals\n\n| method |";
     for (const Input_summary* s : replicas)
@@ -392,8 +424,11 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
 
   // ---------------------------------------------------------------- speed
   md << "## Speed\n\nTime to keep 10%, as a ratio to one sequential `pca_estimate_normals` pass (k = 10) on the same "
-        "input in the same run (seconds in parentheses). For the package and the curvature baseline, "
-        "`timing.csv` also gives the part spent estimating normals.\n\n| method |";
+        "input in the same run (seconds in parentheses). For the package"
+     << (find_peer(r, "PCL normal space sampling") ? ", the curvature baseline and PCL's normal space sampling "
+                                                     "(whose time includes PCL's NormalEstimation)"
+                                                   : " and the curvature baseline")
+     << ", `timing.csv` also gives the part spent estimating normals.\n\n| method |";
   std::vector<const Input_summary*> timed;
   for (const Input_summary& s : r.inputs)
     timed.push_back(&s);

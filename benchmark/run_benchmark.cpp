@@ -3,6 +3,8 @@
 //
 // The benchmark: every method at equal point counts on every input, the
 // paper's experiments, and speed as ratios to CGAL's pca_estimate_normals.
+// PCL's and Open3D's simplifiers are included when the build found them
+// (ES_BENCH_WITH_PCL, ES_BENCH_WITH_OPEN3D: benchmark/CMakeLists.txt).
 //
 //   run_benchmark --data DIR --out DIR [--quick]
 //
@@ -15,6 +17,12 @@
 #include "bench_methods.h"
 #include "bench_metrics.h"
 #include "bench_results_markdown.h"
+#ifdef ES_BENCH_WITH_PCL
+#include "bench_peers_pcl.h"
+#endif
+#ifdef ES_BENCH_WITH_OPEN3D
+#include "bench_peers_open3d.h"
+#endif
 
 #include <CGAL/pca_estimate_normals.h>
 
@@ -69,6 +77,38 @@ void write_points(const std::string& file, const Selection& s)
         << (s.labels.empty() ? 0 : s.labels[i]) << '\n';
 }
 
+// Every method: the package, the paper's baselines, CGAL's simplifiers, then
+// the optional peers that were built (benchmark/CMakeLists.txt).
+std::vector<Method> methods_for(Method_context& context)
+{
+  std::vector<Method> methods = all_methods(context);
+  std::vector<Method> peers;
+#ifdef ES_BENCH_WITH_PCL
+  peers = pcl_peers::methods(context);
+  methods.insert(methods.end(), peers.begin(), peers.end());
+#endif
+#ifdef ES_BENCH_WITH_OPEN3D
+  peers = open3d_peers::methods(context);
+  methods.insert(methods.end(), peers.begin(), peers.end());
+#endif
+  return methods;
+}
+
+// The optional peer families, built or not, for RESULTS.md's header.
+void describe_peers(Report& report)
+{
+#ifdef ES_BENCH_WITH_PCL
+  report.peers_built.push_back(pcl_peers::description());
+#else
+  report.peers_not_built.push_back("PCL (VoxelGrid, UniformSampling, NormalSpaceSampling; Debian libpcl-dev)");
+#endif
+#ifdef ES_BENCH_WITH_OPEN3D
+  report.peers_built.push_back(open3d_peers::description());
+#else
+  report.peers_not_built.push_back("Open3D (VoxelDownSample, FarthestPointDownSample; Debian libopen3d-dev)");
+#endif
+}
+
 Selection prefix(const Cloud& cloud, const std::vector<Index>& order, std::size_t m)
 {
   std::vector<Index> kept(order.begin(), order.begin() + std::ptrdiff_t(m));
@@ -109,7 +149,7 @@ void run_input(const Input_plan& plan, int repeats, double skip_seconds, const s
   }
 
   Method_context context(cloud);
-  for (Method& method : all_methods(context))
+  for (Method& method : methods_for(context))
   {
     std::cerr << "   " << method.name << std::flush;
     std::vector<Index> order;
@@ -157,13 +197,13 @@ void run_input(const Input_plan& plan, int repeats, double skip_seconds, const s
       }
       if (method.predicted_seconds && method.predicted_seconds(m) > 10. && select_seconds.count(ratio))
       {
-        // a long WLOP run is timed once, by its quality run
+        // a long run (WLOP, farthest point sampling) is timed once, by its quality run
         row.timing = Timing{ select_seconds[ratio], 0. };
         row.runs = 1;
         report.timing.push_back(row);
         continue;
       }
-      if (!parameter_of.count(ratio) && method.select && !order.size())
+      if (!parameter_of.count(ratio) && method.select && !order.size() && method.searches_parameters)
         parameter_of[ratio] = method.select(m).parameters;
       const std::vector<double> parameters = parameter_of[ratio];
       const int runs = method.predicted_seconds && method.predicted_seconds(m) > 10. ? 1 : repeats;
@@ -247,6 +287,7 @@ int main(int argc, char** argv)
   report.quick = quick;
   report.repeats = repeats;
   report.skip_seconds = skip_seconds;
+  describe_peers(report);
   CGAL::Real_timer total;
   total.start();
   for (const Input_plan& plan : plans)
