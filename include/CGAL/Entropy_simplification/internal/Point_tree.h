@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Entropy_simplification authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A CGAL Kd tree over point indices, with the package's exact neighbour order.
+// A kd tree over point indices, with the package's exact neighbour order.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
@@ -9,14 +9,8 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
-
 #include <algorithm>
-#include <iterator>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -37,87 +31,176 @@ struct Neighbor
   }
 };
 
-// A CGAL Kd tree over some of the indices of an Indexed_points. Searches are
-// const and may run in parallel; `remove` may not.
+// A kd tree over some of the indices of an Indexed_points, split at the
+// median of the widest side down to leaves of at most `leaf_size` points.
+// Searches are const
+// and may run in parallel; `remove` may not.
 class Point_tree
 {
-  using Point_map = CGAL::Pointer_property_map<Working_point>::const_type;
-  using Traits = CGAL::Search_traits_adapter<Index, Point_map, CGAL::Search_traits_3<Working_kernel> >;
-  using Tree = CGAL::Kd_tree<Traits>;
-  using Sphere = CGAL::Fuzzy_sphere<Traits>;
+  static constexpr std::size_t leaf_size = 12;
+
+  // A node holds m_order[first, beyond); an inner node's children are
+  // m_nodes[child] and m_nodes[child + 1], a leaf has child 0.
+  struct Node
+  {
+    double low[3], high[3];
+    Index first, beyond, child;
+    int cut;          // the dimension an inner node splits
+    double cut_value; // the coordinate its upper child's points start from
+  };
 
 public:
   template <typename IndexIterator>
   Point_tree(const Indexed_points& points, IndexIterator first, IndexIterator beyond)
-    : m_points(points), m_tree(first, beyond, Tree::Splitter(), Traits(CGAL::make_property_map(points.points)))
+    : m_points(points), m_order(first, beyond)
   {
-    m_tree.build();
+    m_nodes.reserve(2 * (m_order.size() / leaf_size + 1));
+    m_nodes.push_back(Node());
+    build(0, 0, Index(m_order.size()));
   }
 
   // Replaces `best` by the first `count` points of the tree other than `q`
-  // in the neighbour order of `q` (all of them when fewer). A depth-first
-  // search, closer child first, as CGAL::Orthogonal_k_neighbor_search, that
-  // skips a subtree only when it is farther than the worst point kept, with a
-  // margin for the rounding of the distance to its box: ties at that distance
-  // are still considered, so the order is exact.
+  // in the neighbour order of `q` (all of them when fewer). A subtree is
+  // skipped only when its box is farther than the worst point kept: the
+  // rounded distance to a box never exceeds the rounded distance to a point
+  // inside it, so ties at that distance are still considered and the order
+  // is exact.
   void nearest(Index q, std::size_t count, std::vector<Neighbor>& best) const
   {
     best.clear();
-    const Working_point& center = m_points.points[q];
-    double offsets[3];
-    const auto& box = m_tree.bounding_box();
+    if (!m_order.empty())
+      search_nearest(0, q, count, best);
+  }
+
+  // Records the largest of `scales` in each node, for `within_reach`.
+  // Children follow their parent in m_nodes: a backward pass sees them first.
+  void record_largest_scales(const std::vector<double>& scales)
+  {
+    m_largest_scale.assign(m_nodes.size(), 0.);
+    for (std::size_t n = m_nodes.size(); n-- > 0;)
+    {
+      const Node& node = m_nodes[n];
+      if (node.child != 0)
+        m_largest_scale[n] = (std::max)(m_largest_scale[node.child], m_largest_scale[node.child + 1]);
+      else
+        for (Index r = node.first; r < node.beyond; ++r)
+          m_largest_scale[n] = (std::max)(m_largest_scale[n], scales[m_order[r]]);
+    }
+  }
+
+  // Replaces `inside` by the points j of the tree within `radius` times
+  // (`scale` + `scales[j]`) of `center`, possibly with a few more at that
+  // distance, in no particular order; a node is skipped at the reach of its
+  // own largest scale. `scales` must be those recorded.
+  void within_reach(const Working_point& center, double radius, double scale, const std::vector<double>& scales,
+                    std::vector<Index>& inside) const
+  {
+    inside.clear();
+    if (!m_order.empty())
+      search_within_reach(0, center, radius, scale, scales, inside);
+  }
+
+  // Leaves `p` out of later searches; the boxes stay as they were.
+  void remove(Index p)
+  {
+    if (m_removed.empty())
+      m_removed.assign(m_points.size(), 0);
+    m_removed[p] = 1;
+  }
+
+private:
+  void build(std::size_t node, Index first, Index beyond)
+  {
+    Node box{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL }, first, beyond, 0, 0, 0. };
+    for (Index r = first; r < beyond; ++r)
+      for (int d = 0; d < 3; ++d)
+      {
+        const double c = m_points.points[m_order[r]].cartesian(d);
+        box.low[d] = (std::min)(box.low[d], c);
+        box.high[d] = (std::max)(box.high[d], c);
+      }
+    if (beyond - first > leaf_size)
+    {
+      int widest = 0;
+      for (int d = 1; d < 3; ++d)
+        if (box.high[d] - box.low[d] > box.high[widest] - box.low[widest])
+          widest = d;
+      const Index middle = first + (beyond - first) / 2;
+      std::nth_element(m_order.begin() + first, m_order.begin() + middle, m_order.begin() + beyond,
+                       [&](Index a, Index b) {
+                         return m_points.points[a].cartesian(widest) < m_points.points[b].cartesian(widest);
+                       });
+      box.cut = widest;
+      box.cut_value = m_points.points[m_order[middle]].cartesian(widest);
+      box.child = Index(m_nodes.size());
+      m_nodes.resize(m_nodes.size() + 2);
+      build(box.child, first, middle);
+      build(box.child + 1, middle, beyond);
+    }
+    m_nodes[node] = box;
+  }
+
+  bool is_removed(Index i) const { return !m_removed.empty() && m_removed[i]; }
+
+  static double squared_distance_to_box(const Working_point& q, const Node& node)
+  {
     double distance = 0.;
     for (int d = 0; d < 3; ++d)
     {
-      const double c = center.cartesian(d);
-      offsets[d] = c < box.min_coord(d) ? box.min_coord(d) - c : (c > box.max_coord(d) ? c - box.max_coord(d) : 0.);
-      distance += offsets[d] * offsets[d];
+      const double c = q.cartesian(d);
+      const double offset = c < node.low[d] ? node.low[d] - c : (c > node.high[d] ? c - node.high[d] : 0.);
+      distance += offset * offset;
     }
-    search(m_tree.root(), distance, offsets, q, count, best);
+    return distance;
   }
 
-  // Replaces `inside` by the points of the tree within `radius` of `center`,
-  // possibly with a few at the boundary, in no particular order.
-  void within(const Working_point& center, double radius, std::vector<Index>& inside) const
+  // Visits the child on the side of `q` first, then the other unless its box
+  // is farther than the worst point kept.
+  void search_nearest(std::size_t n, Index q, std::size_t count, std::vector<Neighbor>& best) const
   {
-    inside.clear();
-    m_tree.search(std::back_inserter(inside),
-                  Sphere(center, radius, 0., Traits(CGAL::make_property_map(m_points.points))));
-  }
-
-  void remove(Index p) { m_tree.remove(p, [p](Index i) { return i == p; }); }
-
-private:
-  void search(Tree::Node_const_handle node, double distance, double offsets[3], Index q, std::size_t count,
-              std::vector<Neighbor>& best) const
-  {
+    const Node& node = m_nodes[n];
     const Working_point& center = m_points.points[q];
-    if (node->is_leaf())
+    if (node.child == 0)
     {
-      const auto leaf = static_cast<Tree::Leaf_node_const_handle>(node);
-      for (auto it = leaf->begin(); it != leaf->end(); ++it)
-        if (*it != q)
-          keep_if_better(
-            Neighbor{ squared_distance(center, m_points.points[*it]), m_points.input_position[*it], *it }, count,
-            best);
+      for (Index r = node.first; r < node.beyond; ++r)
+      {
+        const Index i = m_order[r];
+        const double distance = squared_distance(center, m_points.points[i]);
+        if (best.size() == count && distance > best.back().squared_distance)
+          continue;
+        if (i != q && !is_removed(i))
+          keep_if_better(Neighbor{ distance, m_points.input_position[i], i }, count, best);
+      }
       return;
     }
-    const auto inner = static_cast<Tree::Internal_node_const_handle>(node);
-    const int d = inner->cutting_dimension();
-    const double c = center.cartesian(d);
-    const double to_upper = c - inner->upper_low_value();
-    const double to_lower = c - inner->lower_high_value();
-    const bool lower_first = to_upper + to_lower < 0.;
-    search(lower_first ? inner->lower() : inner->upper(), distance, offsets, q, count, best);
+    const Index upper_side = center.cartesian(node.cut) < node.cut_value ? 0 : 1;
+    const Index first = node.child + upper_side, second = node.child + 1 - upper_side;
+    if (best.size() < count || squared_distance_to_box(center, m_nodes[first]) <= best.back().squared_distance)
+      search_nearest(first, q, count, best);
+    if (best.size() < count || squared_distance_to_box(center, m_nodes[second]) <= best.back().squared_distance)
+      search_nearest(second, q, count, best);
+  }
 
-    const double offset = lower_first ? to_upper : to_lower;
-    const double old_offset = offsets[d];
-    const double other_distance = distance + offset * offset - old_offset * old_offset;
-    if (best.size() < count || other_distance * (1. - 1e-12) <= best.back().squared_distance)
+  // The reach is widened by 1e-9 so that rounding never loses a point at it.
+  void search_within_reach(std::size_t n, const Working_point& center, double radius, double scale,
+                           const std::vector<double>& scales, std::vector<Index>& inside) const
+  {
+    const Node& node = m_nodes[n];
+    const double node_reach = radius * (scale + m_largest_scale[n]) * (1. + 1e-9);
+    if (squared_distance_to_box(center, node) > node_reach * node_reach)
+      return;
+    if (node.child != 0)
     {
-      offsets[d] = offset;
-      search(lower_first ? inner->upper() : inner->lower(), other_distance, offsets, q, count, best);
-      offsets[d] = old_offset;
+      search_within_reach(node.child, center, radius, scale, scales, inside);
+      search_within_reach(node.child + 1, center, radius, scale, scales, inside);
+      return;
+    }
+    for (Index r = node.first; r < node.beyond; ++r)
+    {
+      const Index i = m_order[r];
+      const double reach = radius * (scale + scales[i]) * (1. + 1e-9);
+      if (!is_removed(i) && squared_distance(center, m_points.points[i]) <= reach * reach)
+        inside.push_back(i);
     }
   }
 
@@ -133,7 +216,10 @@ private:
   }
 
   const Indexed_points& m_points;
-  Tree m_tree;
+  std::vector<Index> m_order; // the tree's points, each node's contiguous
+  std::vector<Node> m_nodes;
+  std::vector<char> m_removed; // empty until a removal
+  std::vector<double> m_largest_scale; // of each node, for within_reach
 };
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest

@@ -95,7 +95,6 @@ public:
           m_points, coarse, m_k, m_options, [&](Index i) { return &knn[std::size_t(i) * m_k]; }, m_field,
           [&](double f) { return progress(0.5 + 0.5 * f); }))
       return false;
-    m_largest_scale = *std::max_element(m_field.scale.begin(), m_field.scale.end());
     return true;
   }
 
@@ -128,7 +127,8 @@ private:
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
         present.push_back(i);
-    const Point_tree tree(m_points, present.begin(), present.end());
+    Point_tree tree(m_points, present.begin(), present.end());
+    tree.record_largest_scales(m_field.scale);
 
     std::vector<std::vector<Index> > lists(present.size());
     for_each_index<ConcurrencyTag>(
@@ -137,7 +137,7 @@ private:
         const Index i = present[r];
         thread_local std::vector<Index> inside;
         // the reach of a pair is 2 r times the mean of the two scales
-        tree.within(m_points.points[i], stage.radius * (m_field.scale[i] + m_largest_scale) * (1. + 1e-9), inside);
+        tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
         for (Index j : inside)
           if (j != i && weight(i, j, stage) > 0)
             lists[r].push_back(j);
@@ -211,7 +211,6 @@ private:
   const unsigned int m_k;
   const Options m_options;
   Elimination_field m_field;
-  double m_largest_scale = 1.;
   std::vector<char> m_present;
   std::size_t m_count;
   std::vector<std::size_t> m_first; // CSR offsets of each point's neighbours

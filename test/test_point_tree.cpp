@@ -1,0 +1,133 @@
+// The package's kd tree against a linear scan: the k nearest neighbours in
+// the package's order (squared distance, then input position), the points
+// within a reach that depends on both points' scales, and removals. The
+// clouds hold thousands of points, so that the tree has many levels, and
+// points on an integer lattice, so that many distances tie.
+
+#include <catch2/catch.hpp>
+
+#include <CGAL/Entropy_simplification/experiment_I_replica.h>
+#include <CGAL/Entropy_simplification/internal/Point_tree.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace {
+
+namespace ESI = CGAL::Entropy_simplification::internal;
+
+// 3,000 points: half uniform in a flat box, half on a 12 x 12 x 3 lattice
+// (with repeats of lattice positions), with input positions shuffled.
+ESI::Indexed_points test_points()
+{
+  ESI::Portable_random random(11);
+  ESI::Indexed_points p;
+  for (std::size_t i = 0; i < 3000; ++i)
+  {
+    if (i % 2 == 0)
+      p.points.emplace_back(random.uniform() * 12., random.uniform() * 12., random.uniform() * 3.);
+    else
+      p.points.emplace_back(double(random.below(12)), double(random.below(12)), double(random.below(3)));
+    p.input_position.push_back(ESI::Index(i));
+  }
+  for (std::size_t i = p.size(); i-- > 1;)
+    std::swap(p.input_position[i], p.input_position[random.below(i + 1)]);
+  return p;
+}
+
+// The first `count` points of `candidates` other than q, by (squared
+// distance, input position), by sorting them all.
+std::vector<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const std::vector<ESI::Index>& candidates,
+                                     ESI::Index q, std::size_t count)
+{
+  std::vector<ESI::Index> others;
+  for (ESI::Index i : candidates)
+    if (i != q)
+      others.push_back(i);
+  std::sort(others.begin(), others.end(), [&](ESI::Index a, ESI::Index b) {
+    const double da = ESI::squared_distance(p.points[q], p.points[a]);
+    const double db = ESI::squared_distance(p.points[q], p.points[b]);
+    return da < db || (da == db && p.input_position[a] < p.input_position[b]);
+  });
+  others.resize((std::min)(count, others.size()));
+  return others;
+}
+
+std::vector<ESI::Index> ids(const std::vector<ESI::Neighbor>& best)
+{
+  std::vector<ESI::Index> result;
+  for (const ESI::Neighbor& n : best)
+    result.push_back(n.id);
+  return result;
+}
+
+} // namespace
+
+TEST_CASE("Point tree: nearest neighbours in the package's order, before and after removals", "[point tree]")
+{
+  const ESI::Indexed_points p = test_points();
+  // a tree over every third point, queried from every point
+  std::vector<ESI::Index> members;
+  for (ESI::Index i = 0; i < ESI::Index(p.size()); i += 3)
+    members.push_back(i);
+  ESI::Point_tree tree(p, members.begin(), members.end());
+  std::vector<ESI::Neighbor> best;
+  for (std::size_t count : { std::size_t(1), std::size_t(10), std::size_t(40) })
+    for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 7)
+    {
+      tree.nearest(q, count, best);
+      REQUIRE(ids(best) == scan_nearest(p, members, q, count));
+    }
+  // remove all but 30 members: the searches skip the removed points
+  ESI::Portable_random random(5);
+  std::vector<ESI::Index> present = members;
+  while (present.size() > 30)
+  {
+    const std::size_t r = random.below(present.size());
+    tree.remove(present[r]);
+    present.erase(present.begin() + std::ptrdiff_t(r));
+  }
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 7)
+  {
+    tree.nearest(q, 10, best);
+    REQUIRE(ids(best) == scan_nearest(p, present, q, 10));
+    tree.nearest(q, 100, best); // more than are present
+    REQUIRE(ids(best) == scan_nearest(p, present, q, 100));
+  }
+}
+
+TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]")
+{
+  const ESI::Indexed_points p = test_points();
+  const std::vector<ESI::Index> all = ESI::all_indices(p.size());
+  ESI::Portable_random random(3);
+  std::vector<double> scales;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    scales.push_back(0.5 + 1.5 * random.uniform());
+  ESI::Point_tree tree(p, all.begin(), all.end());
+  tree.record_largest_scales(scales);
+  std::vector<ESI::Index> inside;
+  std::size_t found = 0;
+  for (double radius : { 0.3, 1. })
+    for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 5)
+    {
+      tree.within_reach(p.points[q], radius, scales[q], scales, inside);
+      std::sort(inside.begin(), inside.end());
+      REQUIRE(std::adjacent_find(inside.begin(), inside.end()) == inside.end());
+      // every point strictly within the reach is found; any other found is
+      // at the reach within rounding
+      std::vector<ESI::Index> strictly;
+      for (ESI::Index j : all)
+      {
+        const double reach = radius * (scales[q] + scales[j]);
+        const double d2 = ESI::squared_distance(p.points[q], p.points[j]);
+        if (d2 < reach * reach)
+          strictly.push_back(j);
+        else if (std::binary_search(inside.begin(), inside.end(), j))
+          REQUIRE(d2 <= reach * reach * (1. + 1e-8));
+      }
+      REQUIRE(std::includes(inside.begin(), inside.end(), strictly.begin(), strictly.end()));
+      found += strictly.size();
+    }
+  CHECK(found > 20 * p.size() / 5); // the reaches hold many points
+}
