@@ -256,13 +256,14 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  const std::vector<ES::Working_point> input = ES::working_points(points, np);
-  if (input.empty())
+  std::vector<ES::Working_point> input = ES::working_points(points, np);
+  const std::size_t n = input.size();
+  if (n == 0)
     return points.end();
-  const std::size_t target = ES::requested_output_size(input.size(), np);
-  const ES::Distinct_points distinct = ES::collapse_duplicates(input);
-  ES::check_simplification_arguments(input.size(), distinct.size(), k, target, options);
-  if (target == input.size() && !has_normal_map)
+  const std::size_t target = ES::requested_output_size(n, np);
+  ES::Distinct_points distinct = ES::collapse_duplicates(std::move(input));
+  ES::check_simplification_arguments(n, distinct.size(), k, target, options);
+  if (target == n && !has_normal_map)
     return points.end();
 
   const auto at = ES::iterators_of(points);
@@ -273,7 +274,8 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
                                     typename Kernel::FT(n.z())));
   };
   const std::vector<ES::Index> removed =
-    ES::simplify_points<ConcurrencyTag>(distinct, k, target, options, callback, has_normal_map, write_normal);
+    ES::simplify_points<ConcurrencyTag>(std::move(distinct), k, target, options, callback, has_normal_map,
+                                        write_normal);
 
   const std::size_t kept = ES::order_by_removal(at, removed);
   return kept == at.size() ? points.end() : at[kept];

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -32,13 +33,13 @@ struct Distinct_points
   std::vector<Index> copies;          // input positions of the other points, ascending
   std::vector<Index> representative;  // for each copy, the index of its representative in `points`
 
-  std::size_t size() const { return points.size(); }
+  std::size_t size() const { return input_position.size(); }
 };
 
 // Sorting is O(n log n) whatever the number of copies, and sorting by
 // coordinates then position makes the first of each run of equal points the
 // earliest in input order.
-inline Distinct_points collapse_duplicates(const std::vector<Working_point>& points)
+inline Distinct_points collapse_duplicates(std::vector<Working_point> points)
 {
   std::vector<Index> order(points.size());
   for (std::size_t i = 0; i < order.size(); ++i)
@@ -51,14 +52,17 @@ inline Distinct_points collapse_duplicates(const std::vector<Working_point>& poi
   for (std::size_t r = 0; r < order.size(); ++r)
     first[order[r]] = r > 0 && points[order[r]] == points[order[r - 1]] ? first[order[r - 1]] : order[r];
 
+  // The representatives move to the front of `points`, in input order: each
+  // goes to a slot at or before its own, so the compaction is in place. The
+  // sorted order is done with: its memory holds the slots.
   Distinct_points result;
-  std::vector<Index> slot(points.size());
+  std::vector<Index>& slot = order;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     if (first[i] == i)
     {
-      slot[i] = Index(result.points.size());
-      result.points.push_back(points[i]);
+      slot[i] = Index(result.input_position.size());
+      points[slot[i]] = points[i];
       result.input_position.push_back(Index(i));
     }
     else
@@ -67,6 +71,8 @@ inline Distinct_points collapse_duplicates(const std::vector<Working_point>& poi
       result.representative.push_back(slot[first[i]]);
     }
   }
+  points.resize(result.input_position.size());
+  result.points = std::move(points);
   return result;
 }
 

@@ -29,64 +29,73 @@ inline std::vector<Index> indices_by_input_position(const Indexed_points& points
   return by_input;
 }
 
-// For each input point, the present point nearest to it (ties by input
-// position): the Voronoi cell of the present points it falls in.
-template <typename ConcurrencyTag>
-std::vector<Index> voronoi_cells(const Indexed_points& points, const std::vector<char>& present)
+// The Voronoi cells of the present points (the sites) among the input
+// points: each input point falls in the cell of its nearest site (ties by
+// input position).
+struct Voronoi_cells
 {
-  std::vector<Index> sites;
+  std::vector<Index> sites;    // the present points, by index
+  std::vector<Index> site_of;  // for each point, the rank of its site in `sites`
+};
+
+template <typename ConcurrencyTag>
+Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char>& present)
+{
+  Voronoi_cells cells;
+  std::vector<Index>& rank = cells.site_of; // the rank of each site, filled in first
+  rank.assign(points.size(), 0);
   for (Index i = 0; i < Index(points.size()); ++i)
     if (present[i])
-      sites.push_back(i);
-  const Point_tree tree(points, sites.begin(), sites.end());
-  std::vector<Index> cell(points.size());
+    {
+      rank[i] = Index(cells.sites.size());
+      cells.sites.push_back(i);
+    }
+  const Point_tree tree(points, cells.sites.begin(), cells.sites.end());
+  // a site is its own nearest, which the search leaves out; the others read
+  // the rank of a site, which is never overwritten
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) {
       thread_local std::vector<Neighbor> nearest;
-      // a site is its own nearest, which the search leaves out
-      if (present[i])
-        cell[i] = Index(i);
-      else
+      if (!present[i])
       {
         tree.nearest(Index(i), 1, nearest);
-        cell[i] = nearest.front().id;
+        rank[i] = rank[nearest.front().id];
       }
     },
     [](std::size_t) { return true; });
-  return cell;
+  return cells;
 }
 
 // The member of each cell nearest the cell's centroid (ties by input
 // position), as the new present points. Sums run in input order, so that
 // they do not depend on the internal order.
-inline std::vector<char> members_nearest_centroids(const Indexed_points& points, const std::vector<Index>& cell,
+inline std::vector<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells,
                                                    const std::vector<Index>& by_input)
 {
-  const std::size_t n = points.size();
-  std::vector<std::array<double, 4> > sum(n, { 0., 0., 0., 0. });
+  const std::size_t m = cells.sites.size();
+  std::vector<std::array<double, 4> > sum(m, { 0., 0., 0., 0. });
   for (Index i : by_input)
   {
     const Working_point& p = points.points[i];
-    std::array<double, 4>& s = sum[cell[i]];
+    std::array<double, 4>& s = sum[cells.site_of[i]];
     s[0] += p.x();
     s[1] += p.y();
     s[2] += p.z();
     s[3] += 1.;
   }
-  std::vector<Neighbor> best(n, Neighbor{ std::numeric_limits<double>::infinity(), 0, 0 });
+  std::vector<Neighbor> best(m, Neighbor{ std::numeric_limits<double>::infinity(), 0, 0 });
   for (Index i : by_input)
   {
-    const std::array<double, 4>& s = sum[cell[i]];
-    const Working_point centroid(s[0] / s[3], s[1] / s[3], s[2] / s[3]);
+    const Index c = cells.site_of[i];
+    const Working_point centroid(sum[c][0] / sum[c][3], sum[c][1] / sum[c][3], sum[c][2] / sum[c][3]);
     const Neighbor candidate{ squared_distance(points.points[i], centroid), points.input_position[i], i };
-    if (candidate < best[cell[i]])
-      best[cell[i]] = candidate;
+    if (candidate < best[c])
+      best[c] = candidate;
   }
-  std::vector<char> present(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
-    if (cell[c] == c)
-      present[best[c].id] = 1;
+  std::vector<char> present(points.size(), 0);
+  for (const Neighbor& b : best)
+    present[b.id] = 1;
   return present;
 }
 

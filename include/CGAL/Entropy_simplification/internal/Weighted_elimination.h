@@ -114,12 +114,18 @@ public:
       if (!eliminate(stage, removed))
         return false;
     }
+    // the relocation that follows needs none of the elimination's memory
+    std::vector<std::size_t>().swap(m_first);
+    std::vector<Index>().swap(m_neighbors);
+    std::vector<std::int64_t>().swap(m_weight);
     return true;
   }
 
 private:
   // For each present point, the present points within its reach, in CSR
-  // form, and its weight.
+  // form, and its weight. The points are taken by blocks, each gathered in
+  // parallel then appended in index order, so that the lists in the making
+  // never hold more than a block.
   template <typename ConcurrencyTag>
   void gather_neighbors(const Elimination_stage& stage)
   {
@@ -130,47 +136,41 @@ private:
     Point_tree tree(m_points, present.begin(), present.end());
     tree.record_largest_scales(m_field.scale);
 
-    std::vector<std::vector<Index> > lists(present.size());
-    for_each_index<ConcurrencyTag>(
-      present.size(),
-      [&](std::size_t r) {
-        const Index i = present[r];
-        thread_local std::vector<Index> inside;
-        // the reach of a pair is 2 r times the mean of the two scales
-        tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
-        for (Index j : inside)
-          if (j != i && weight(i, j, stage) > 0)
-            lists[r].push_back(j);
-      },
-      [](std::size_t) { return true; });
-    store_neighbor_lists(present, lists);
-
-    m_weight.assign(m_points.size(), 0);
-    for_each_index<ConcurrencyTag>(
-      present.size(),
-      [&](std::size_t r) {
-        const Index i = present[r];
-        for (std::size_t e = m_first[i]; e < m_first[i + 1]; ++e)
-          m_weight[i] += weight(i, m_neighbors[e], stage);
-      },
-      [](std::size_t) { return true; });
-  }
-
-  // Packs the lists into one array; offsets are 64-bit, as dense clouds can
-  // hold more than 2^32 pairs within reach.
-  void store_neighbor_lists(const std::vector<Index>& present, std::vector<std::vector<Index> >& lists)
-  {
     m_first.assign(m_points.size() + 1, 0);
-    for (std::size_t r = 0; r < present.size(); ++r)
-      m_first[present[r] + 1] = lists[r].size();
+    m_neighbors.clear();
+    m_weight.assign(m_points.size(), 0);
+    std::vector<std::vector<Index> > lists((std::min)(present.size(), gather_block));
+    for (std::size_t first = 0; first < present.size(); first += gather_block)
+    {
+      const std::size_t count = (std::min)(gather_block, present.size() - first);
+      for_each_index<ConcurrencyTag>(
+        count,
+        [&](std::size_t r) {
+          const Index i = present[first + r];
+          thread_local std::vector<Index> inside;
+          tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
+          lists[r].clear();
+          for (Index j : inside)
+            if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
+            {
+              lists[r].push_back(j);
+              m_weight[i] += w;
+            }
+        },
+        [](std::size_t) { return true; });
+      for (std::size_t r = 0; r < count; ++r)
+      {
+        m_first[present[first + r] + 1] = lists[r].size();
+        m_neighbors.insert(m_neighbors.end(), lists[r].begin(), lists[r].end());
+      }
+      // the first block predicts the whole, so that the array rarely grows
+      // by doubling, which would hold twice the memory at the peak
+      if (first == 0)
+        m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(present.size()) / double(count)));
+    }
+    // counts to offsets: the lists were appended in index order
     for (std::size_t i = 0; i < m_points.size(); ++i)
       m_first[i + 1] += m_first[i];
-    m_neighbors.resize(m_first.back());
-    for (std::size_t r = 0; r < present.size(); ++r)
-    {
-      std::copy(lists[r].begin(), lists[r].end(), m_neighbors.begin() + std::ptrdiff_t(m_first[present[r]]));
-      std::vector<Index>().swap(lists[r]);
-    }
   }
 
   template <typename Removed>
@@ -213,7 +213,10 @@ private:
   Elimination_field m_field;
   std::vector<char> m_present;
   std::size_t m_count;
-  std::vector<std::size_t> m_first; // CSR offsets of each point's neighbours
+  static constexpr std::size_t gather_block = std::size_t(1) << 15;
+  // CSR offsets of each point's neighbours: 64-bit, as dense clouds can hold
+  // more than 2^32 pairs within reach
+  std::vector<std::size_t> m_first;
   std::vector<Index> m_neighbors;   // CSR neighbours
   std::vector<std::int64_t> m_weight;
 };

@@ -73,9 +73,9 @@ template <typename ConcurrencyTag>
 void relocate(const Indexed_points& points, Engine_run& run)
 {
   std::vector<char> present = present_after(run, points.size());
-  std::vector<std::size_t> rank(points.size(), 0);
+  std::vector<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
-    rank[run.removed[r]] = r;
+    rank[run.removed[r]] = Index(r);
   for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations))
     run.removed[rank[swap.second]] = swap.first;
 }
@@ -101,15 +101,20 @@ std::vector<Index> finish(const Engine& engine, const Indexed_points& points, co
 // order, down to `target`: the positions of the removed points in removal
 // order, or nothing when the callback stopped the initialisation.
 template <typename ConcurrencyTag, typename NormalWriter>
-std::optional<std::vector<Index> > simplify_distinct_points(const std::vector<Working_point>& points, unsigned int k,
+std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_point>&& points, unsigned int k,
                                                             std::size_t target, const Options& options,
                                                             const std::function<bool(double)>& callback,
                                                             const NormalWriter& write_normal)
 {
+  // the paper's plane is fitted in input order; then the points in input
+  // order are done with, and their memory goes back before the run
+  const Working_vector plane_normal =
+    options.mode == Mode::paper ? reference_normal(options, points) : Working_vector(CGAL::NULL_VECTOR);
   const Indexed_points indexed = sort_spatially(points);
+  std::vector<Working_point>().swap(points);
   if (options.mode == Mode::paper)
   {
-    Paper_simplification engine(indexed, k, options, reference_normal(options, points));
+    Paper_simplification engine(indexed, k, options, plane_normal);
     const Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
     if (!run.initialized)
       return std::nullopt;
@@ -128,11 +133,12 @@ std::optional<std::vector<Index> > simplify_distinct_points(const std::vector<Wo
 // input positions of the removed points in removal order. The copies of
 // coincident points go first, the last in input order first, so that they
 // come back in input order once every distinct point is kept; a kept copy
-// gets the normal of its representative. `write_normal(position, normal)`
+// gets the normal of its representative. The distinct points' coordinates
+// are released once sorted. `write_normal(position, normal)`
 // receives the normal of each kept point when `with_normals`. Nothing is
 // removed when the callback stops the initialisation.
 template <typename ConcurrencyTag, typename NormalWriter>
-std::vector<Index> simplify_points(const Distinct_points& distinct, unsigned int k, std::size_t target,
+std::vector<Index> simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
                                    const Options& options, const std::function<bool(double)>& callback,
                                    bool with_normals, const NormalWriter& write_normal)
 {
@@ -145,7 +151,7 @@ std::vector<Index> simplify_points(const Distinct_points& distinct, unsigned int
 
   std::vector<Working_vector> normal_of_slot(kept_copies > 0 ? distinct.size() : 0);
   const std::optional<std::vector<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
-    distinct.points, k, (std::min)(target, distinct.size()), options, callback,
+    std::move(distinct.points), k, (std::min)(target, distinct.size()), options, callback,
     [&](Index slot, const Working_vector& normal) {
       write_normal(distinct.input_position[slot], normal);
       if (kept_copies > 0)
