@@ -131,3 +131,25 @@ TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]"
     }
   CHECK(found > 20 * p.size() / 5); // the reaches hold many points
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST_CASE("Point tree: a tree built in parallel answers as a linear scan", "[point tree]")
+{
+  // 150,000 points, above the size from which subtrees are built in parallel
+  ESI::Portable_random random(17);
+  ESI::Indexed_points p;
+  for (std::size_t i = 0; i < 150000; ++i)
+  {
+    p.points.emplace_back(double(random.below(400)), double(random.below(400)), random.uniform());
+    p.input_position.push_back(ESI::Index(i));
+  }
+  const std::vector<ESI::Index> all = ESI::all_indices(p.size());
+  const ESI::Point_tree tree(p, all.begin(), all.end(), CGAL::Parallel_tag());
+  std::vector<ESI::Neighbor> best;
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 997)
+  {
+    tree.nearest(q, 10, best);
+    REQUIRE(ids(best) == scan_nearest(p, all, q, 10));
+  }
+}
+#endif

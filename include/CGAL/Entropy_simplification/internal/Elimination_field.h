@@ -79,7 +79,7 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
   std::vector<double> strength(n, 0.);
   if (coarse.size() < std::size_t(k) + 1)
     return strength;
-  const Point_tree tree(points, coarse.begin(), coarse.end());
+  const Point_tree tree(points, coarse.begin(), coarse.end(), ConcurrencyTag());
   std::vector<Index> knn;
   nearest_neighbor_table<ConcurrencyTag>(tree, coarse, k, knn, [](std::size_t) { return true; });
   // the position of each coarse point in `coarse`, one past the end for the others

@@ -50,7 +50,7 @@ Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char
       rank[i] = Index(cells.sites.size());
       cells.sites.push_back(i);
     }
-  const Point_tree tree(points, cells.sites.begin(), cells.sites.end());
+  const Point_tree tree(points, cells.sites.begin(), cells.sites.end(), ConcurrencyTag());
   // a site is its own nearest, which the search leaves out; the others read
   // the rank of a site, which is never overwritten
   for_each_index<ConcurrencyTag>(

@@ -9,8 +9,15 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -33,11 +40,12 @@ struct Neighbor
 
 // A kd tree over some of the indices of an Indexed_points, split at the
 // median of the widest side down to leaves of at most `leaf_size` points.
-// Searches are const
-// and may run in parallel; `remove` may not.
+// Searches are const and may run in parallel; `remove` may not.
 class Point_tree
 {
-  static constexpr std::size_t leaf_size = 12;
+  static constexpr std::size_t leaf_size = 20;
+  // subtrees of more points are built in parallel under Parallel_tag
+  static constexpr std::size_t parallel_build_size = std::size_t(1) << 16;
 
   // A node holds m_order[first, beyond); an inner node's children are
   // m_nodes[child] and m_nodes[child + 1], a leaf has child 0.
@@ -45,18 +53,22 @@ class Point_tree
   {
     double low[3], high[3];
     Index first, beyond, child;
-    int cut;          // the dimension an inner node splits
-    double cut_value; // the coordinate its upper child's points start from
+    int cut = 0;           // the dimension an inner node splits
+    double cut_value = 0.; // the coordinate its upper child's points start from
   };
 
 public:
-  template <typename IndexIterator>
-  Point_tree(const Indexed_points& points, IndexIterator first, IndexIterator beyond)
+  template <typename IndexIterator, typename ConcurrencyTag = CGAL::Sequential_tag>
+  Point_tree(const Indexed_points& points, IndexIterator first, IndexIterator beyond,
+             ConcurrencyTag = ConcurrencyTag())
     : m_points(points), m_order(first, beyond)
   {
+    // the shape of the tree depends on the number of points alone: laid out
+    // first, its nodes are then filled independently of each other
     m_nodes.reserve(2 * (m_order.size() / leaf_size + 1));
     m_nodes.push_back(Node());
-    build(0, 0, Index(m_order.size()));
+    lay_out(0, 0, Index(m_order.size()));
+    fill<ConcurrencyTag>(0);
   }
 
   // Replaces `best` by the first `count` points of the tree other than `q`
@@ -109,35 +121,63 @@ public:
   }
 
 private:
-  void build(std::size_t node, Index first, Index beyond)
+  void lay_out(std::size_t node, Index first, Index beyond)
   {
-    Node box{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL }, first, beyond, 0, 0, 0. };
-    for (Index r = first; r < beyond; ++r)
+    m_nodes[node].first = first;
+    m_nodes[node].beyond = beyond;
+    m_nodes[node].child = 0;
+    if (beyond - first <= leaf_size)
+      return;
+    const Index child = Index(m_nodes.size());
+    m_nodes[node].child = child;
+    m_nodes.resize(m_nodes.size() + 2);
+    const Index middle = first + (beyond - first) / 2;
+    lay_out(child, first, middle);
+    lay_out(child + 1, middle, beyond);
+  }
+
+  // The box of a node, then, for an inner node, its points split at the
+  // median of the box's widest side between its children.
+  template <typename ConcurrencyTag>
+  void fill(std::size_t n)
+  {
+    Node& node = m_nodes[n];
+    for (int d = 0; d < 3; ++d)
+    {
+      node.low[d] = HUGE_VAL;
+      node.high[d] = -HUGE_VAL;
+    }
+    for (Index r = node.first; r < node.beyond; ++r)
       for (int d = 0; d < 3; ++d)
       {
         const double c = m_points.points[m_order[r]].cartesian(d);
-        box.low[d] = (std::min)(box.low[d], c);
-        box.high[d] = (std::max)(box.high[d], c);
+        node.low[d] = (std::min)(node.low[d], c);
+        node.high[d] = (std::max)(node.high[d], c);
       }
-    if (beyond - first > leaf_size)
+    if (node.child == 0)
+      return;
+    node.cut = 0;
+    for (int d = 1; d < 3; ++d)
+      if (node.high[d] - node.low[d] > node.high[node.cut] - node.low[node.cut])
+        node.cut = d;
+    const Index middle = m_nodes[node.child].beyond;
+    const int cut = node.cut;
+    std::nth_element(m_order.begin() + node.first, m_order.begin() + middle, m_order.begin() + node.beyond,
+                     [&](Index a, Index b) {
+                       return m_points.points[a].cartesian(cut) < m_points.points[b].cartesian(cut);
+                     });
+    node.cut_value = m_points.points[m_order[middle]].cartesian(cut);
+#ifdef CGAL_LINKED_WITH_TBB
+    if (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value &&
+        node.beyond - node.first > parallel_build_size)
     {
-      int widest = 0;
-      for (int d = 1; d < 3; ++d)
-        if (box.high[d] - box.low[d] > box.high[widest] - box.low[widest])
-          widest = d;
-      const Index middle = first + (beyond - first) / 2;
-      std::nth_element(m_order.begin() + first, m_order.begin() + middle, m_order.begin() + beyond,
-                       [&](Index a, Index b) {
-                         return m_points.points[a].cartesian(widest) < m_points.points[b].cartesian(widest);
-                       });
-      box.cut = widest;
-      box.cut_value = m_points.points[m_order[middle]].cartesian(widest);
-      box.child = Index(m_nodes.size());
-      m_nodes.resize(m_nodes.size() + 2);
-      build(box.child, first, middle);
-      build(box.child + 1, middle, beyond);
+      const Index child = node.child;
+      tbb::parallel_invoke([&] { fill<ConcurrencyTag>(child); }, [&] { fill<ConcurrencyTag>(child + 1); });
+      return;
     }
-    m_nodes[node] = box;
+#endif
+    fill<ConcurrencyTag>(node.child);
+    fill<ConcurrencyTag>(node.child + 1);
   }
 
   bool is_removed(Index i) const { return !m_removed.empty() && m_removed[i]; }

@@ -85,9 +85,13 @@ public:
     const std::size_t n = m_points.size();
     const std::vector<Index> all = all_indices(n);
     std::vector<Index> knn;
-    if (!nearest_neighbor_table<ConcurrencyTag>(Point_tree(m_points, all.begin(), all.end()), all, m_k, knn,
-                                                [&](std::size_t done) { return progress(0.5 * double(done) / double(n)); }))
-      return false;
+    { // the tree goes before the field is computed
+      const Point_tree tree(m_points, all.begin(), all.end(), ConcurrencyTag());
+      if (!nearest_neighbor_table<ConcurrencyTag>(tree, all, m_k, knn, [&](std::size_t done) {
+            return progress(0.5 * double(done) / double(n));
+          }))
+        return false;
+    }
     std::vector<Index> coarse;
     for (std::size_t i = 0; i < n; i += coarse_stride)
       coarse.push_back(Index(i));
@@ -133,7 +137,7 @@ private:
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
         present.push_back(i);
-    Point_tree tree(m_points, present.begin(), present.end());
+    Point_tree tree(m_points, present.begin(), present.end(), ConcurrencyTag());
     tree.record_largest_scales(m_field.scale);
 
     m_first.assign(m_points.size() + 1, 0);
