@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
+#include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
 #include <algorithm>
@@ -151,5 +152,27 @@ TEST_CASE("Point tree: a tree built in parallel answers as a linear scan", "[poi
     tree.nearest(q, 10, best);
     REQUIRE(ids(best) == scan_nearest(p, all, q, 10));
   }
+}
+#endif
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The orders the two modes start from: CGAL's parallel spatial sort makes the
+// splits of the sequential one, and the sort of coincident points is by a
+// total order; on 150,000 points both run their parallel code.
+TEST_CASE("Point tree: the spatial order and the collapse of copies do not depend on the tag", "[point tree]")
+{
+  ESI::Portable_random random(23);
+  std::vector<ESI::Working_point> points;
+  for (std::size_t i = 0; i < 150000; ++i)
+    points.emplace_back(double(random.below(100)), double(random.below(100)), double(random.below(3)));
+  const ESI::Indexed_points sequential = ESI::sort_spatially<CGAL::Sequential_tag>(points);
+  const ESI::Indexed_points parallel = ESI::sort_spatially<CGAL::Parallel_tag>(points);
+  CHECK(sequential.input_position == parallel.input_position);
+  const ESI::Distinct_points one = ESI::collapse_duplicates<CGAL::Sequential_tag>(points);
+  const ESI::Distinct_points two = ESI::collapse_duplicates<CGAL::Parallel_tag>(points);
+  CHECK(one.input_position == two.input_position);
+  CHECK(one.copies == two.copies);
+  CHECK(one.representative == two.representative);
+  CHECK(one.copies.size() > 100000); // 30,000 lattice positions for 150,000 points
 }
 #endif

@@ -104,7 +104,7 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
                                 std::to_string(input.size()) + " points");
 
   const ES::Working_vector reference = ES::reference_normal(options, input);
-  const ES::Indexed_points indexed = ES::sort_spatially(input);
+  const ES::Indexed_points indexed = ES::sort_spatially<ConcurrencyTag>(input);
   ES::Paper_simplification state(indexed, k, options, reference);
   state.template initialize<ConcurrencyTag>([](double) { return true; });
 

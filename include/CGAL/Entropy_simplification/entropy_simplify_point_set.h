@@ -261,7 +261,7 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   if (n == 0)
     return points.end();
   const std::size_t target = ES::requested_output_size(n, np);
-  ES::Distinct_points distinct = ES::collapse_duplicates(std::move(input));
+  ES::Distinct_points distinct = ES::collapse_duplicates<ConcurrencyTag>(std::move(input));
   ES::check_simplification_arguments(n, distinct.size(), k, target, options);
   if (target == n && !has_normal_map)
     return points.end();

@@ -8,8 +8,15 @@
 
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,13 +46,21 @@ struct Distinct_points
 // Sorting is O(n log n) whatever the number of copies, and sorting by
 // coordinates then position makes the first of each run of equal points the
 // earliest in input order.
-inline Distinct_points collapse_duplicates(std::vector<Working_point> points)
+// The order is total (positions differ), so a parallel sort gives the same.
+template <typename ConcurrencyTag>
+Distinct_points collapse_duplicates(std::vector<Working_point> points)
 {
   std::vector<Index> order(points.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = Index(i);
   auto key = [&points](Index i) { return std::make_tuple(points[i].x(), points[i].y(), points[i].z(), i); };
-  std::sort(order.begin(), order.end(), [&key](Index a, Index b) { return key(a) < key(b); });
+  auto before = [&key](Index a, Index b) { return key(a) < key(b); };
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    tbb::parallel_sort(order.begin(), order.end(), before);
+  else
+#endif
+    std::sort(order.begin(), order.end(), before);
 
   // the input position of the representative of each point
   std::vector<Index> first(points.size());

@@ -11,6 +11,7 @@
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
+#include <CGAL/tags.h>
 
 #include <cmath>
 #include <cstdint>
@@ -83,7 +84,8 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
 }
 
 // Reorders points given in input order along a Hilbert curve.
-inline Indexed_points sort_spatially(const std::vector<Working_point>& points_in_input_order)
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+Indexed_points sort_spatially(const std::vector<Working_point>& points_in_input_order)
 {
   // The property map's key type is std::size_t, and spatial_sort wants it
   // to be the sorted value type.
@@ -94,7 +96,9 @@ inline Indexed_points sort_spatially(const std::vector<Working_point>& points_in
     CGAL::Spatial_sort_traits_adapter_3<Working_kernel,
                                         CGAL::Pointer_property_map<Working_point>::const_type>;
   // spatial_sort shuffles with a fixed seed, so the order is reproducible.
-  CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(points_in_input_order)));
+  // Its parallel version makes the same splits, so the order is the same.
+  CGAL::spatial_sort<ConcurrencyTag>(order.begin(), order.end(),
+                                     Sort_traits(CGAL::make_property_map(points_in_input_order)));
 
   Indexed_points result;
   result.input_position.assign(order.begin(), order.end());

@@ -110,7 +110,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
   // order are done with, and their memory goes back before the run
   const Working_vector plane_normal =
     options.mode == Mode::paper ? reference_normal(options, points) : Working_vector(CGAL::NULL_VECTOR);
-  const Indexed_points indexed = sort_spatially(points);
+  const Indexed_points indexed = sort_spatially<ConcurrencyTag>(points);
   std::vector<Working_point>().swap(points);
   if (options.mode == Mode::paper)
   {
