@@ -34,12 +34,13 @@ struct Elimination_field
   double effective_area = 0.;
 };
 
-// The entropy of the normals of each point's neighbourhood, `neighbors(i)`
-// giving the k nearest neighbours of point `i` nearest first; the normals,
-// estimated on each point and its neighbours, go to `normals`.
-template <typename ConcurrencyTag, typename NeighborsOf, typename Progress>
+// The entropy of the normals of each point of `subset`'s neighbourhood,
+// `neighbors(i)` giving the k nearest neighbours of point `i` nearest first;
+// the normals, estimated on each point and its neighbours, go to `normals`.
+// Both are stored at `slot(i)`, so that a subset needs arrays of its size.
+template <typename ConcurrencyTag, typename NeighborsOf, typename SlotOf, typename Progress>
 bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Index>& subset, unsigned int k,
-                             Normal_estimation estimation, const NeighborsOf& neighbors,
+                             Normal_estimation estimation, const NeighborsOf& neighbors, const SlotOf& slot,
                              std::vector<Working_vector>& normals, std::vector<double>& entropy,
                              const Progress& progress)
 {
@@ -49,7 +50,7 @@ bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Ind
         [&](std::size_t r) {
           const Index i = subset[r];
           const Index* near = neighbors(i);
-          normals[i] = estimate_normal(estimation, k + 1, [&](std::size_t j) -> const Working_point& {
+          normals[slot(i)] = estimate_normal(estimation, k + 1, [&](std::size_t j) -> const Working_point& {
             return points.points[j == 0 ? i : near[j - 1]];
           });
         },
@@ -60,8 +61,8 @@ bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Ind
     [&](std::size_t r) {
       const Index i = subset[r];
       const Index* near = neighbors(i);
-      entropy[i] = normal_tensor_entropy(k + 1, [&](std::size_t j) -> const Working_vector& {
-        return normals[j == 0 ? i : near[j - 1]];
+      entropy[slot(i)] = normal_tensor_entropy(k + 1, [&](std::size_t j) -> const Working_vector& {
+        return normals[slot(j == 0 ? i : near[j - 1])];
       });
     },
     [&](std::size_t done) { return progress(0.5 + 0.5 * double(done) / double(m)); });
@@ -86,15 +87,13 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
   std::vector<Index> slot(n, Index(coarse.size()));
   for (std::size_t r = 0; r < coarse.size(); ++r)
     slot[coarse[r]] = Index(r);
-  std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
-  std::vector<double> entropy(n, 0.);
+  // the coarse points' normals and entropies, by slot
+  std::vector<Working_vector> normals(coarse.size(), CGAL::NULL_VECTOR);
+  std::vector<double> entropy(coarse.size(), 0.);
   estimate_normal_entropy<ConcurrencyTag>(
-    points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; }, normals, entropy,
-    [](double) { return true; });
-  std::vector<double> coarse_entropy;
-  for (Index c : coarse)
-    coarse_entropy.push_back(entropy[c]);
-  const double floor = entropy_noise_floor(coarse_entropy);
+    points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
+    [&](Index i) { return slot[i]; }, normals, entropy, [](double) { return true; });
+  const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
@@ -106,7 +105,7 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
         tree.nearest(Index(i), 1, nearest);
         c = nearest.front().id;
       }
-      strength[i] = feature_strength(entropy[c], floor);
+      strength[i] = feature_strength(entropy[slot[c]], floor);
     },
     [](std::size_t) { return true; });
   return strength;
@@ -166,7 +165,7 @@ bool compute_elimination_field(const Indexed_points& points, const std::vector<I
   field.normals.assign(n, CGAL::NULL_VECTOR);
   std::vector<double> entropy(n);
   if (!estimate_normal_entropy<ConcurrencyTag>(points, all_indices(n), k, options.normal_estimation, neighbors,
-                                               field.normals, entropy, progress))
+                                               [](Index i) { return i; }, field.normals, entropy, progress))
     return false;
 
   std::vector<double> strength =

@@ -33,12 +33,12 @@ public:
     Index id;
   };
 
-  // Entry i must have id i.
-  explicit Indexed_heap(std::vector<Entry> entries)
-    : m_heap(std::move(entries)), m_position(m_heap.size())
+  // The entries' ids must be distinct and below `id_count`.
+  Indexed_heap(std::vector<Entry> entries, std::size_t id_count)
+    : m_heap(std::move(entries)), m_position(id_count, none)
   {
     for (std::size_t i = 0; i < m_heap.size(); ++i)
-      m_position[i] = Index(i);
+      m_position[m_heap[i].id] = Index(i);
     for (std::size_t i = m_heap.size() / 2; i-- > 0;)
       sift_down(i);
   }

@@ -71,7 +71,7 @@ public:
           },
           report(0.8, 0.2)))
       return false;
-    m_heap = Indexed_heap(std::move(entries));
+    m_heap = Indexed_heap(std::move(entries), n);
     return true;
   }
 
@@ -148,7 +148,7 @@ private:
   const Working_vector m_reference;
   Decremental_knn m_knn;
   std::vector<Angle_term> m_angles;
-  Indexed_heap m_heap{ {} };
+  Indexed_heap m_heap{ {}, 0 };
   std::vector<Index> m_changed;
   std::vector<Index> m_mark; // removal at which a point's importance was last refreshed
   Index m_epoch = 0;

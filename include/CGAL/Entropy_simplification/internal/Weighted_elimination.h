@@ -83,9 +83,9 @@ public:
   bool initialize(const Progress& progress)
   {
     const std::size_t n = m_points.size();
-    const std::vector<Index> all = all_indices(n);
     std::vector<Index> knn;
     { // the tree goes before the field is computed
+      const std::vector<Index> all = all_indices(n);
       const Point_tree tree(m_points, all.begin(), all.end(), ConcurrencyTag());
       if (!nearest_neighbor_table<ConcurrencyTag>(tree, all, m_k, knn, [&](std::size_t done) {
             return progress(0.5 * double(done) / double(n));
@@ -180,11 +180,12 @@ private:
   template <typename Removed>
   bool eliminate(const Elimination_stage& stage, const Removed& removed)
   {
-    std::vector<Indexed_heap::Entry> entries(m_points.size());
+    std::vector<Indexed_heap::Entry> entries;
+    entries.reserve(m_count);
     for (Index i = 0; i < Index(m_points.size()); ++i)
-      // absent points sink below every present one: they are never popped
-      entries[i] = Indexed_heap::Entry{ is_present(i) ? -double(m_weight[i]) : 1., m_points.input_position[i], i };
-    Indexed_heap heap(std::move(entries));
+      if (is_present(i))
+        entries.push_back(Indexed_heap::Entry{ -double(m_weight[i]), m_points.input_position[i], i });
+    Indexed_heap heap(std::move(entries), m_points.size());
 
     while (m_count > stage.target)
     {
