@@ -1,6 +1,6 @@
-set terminal pngcairo noenhanced size 1800,1290 font 'sans,10'
+set terminal pngcairo noenhanced size 1800,1720 font 'sans,10'
 set output 'pictures_lion.png'
-set multiplot layout 3,4 title 'lion, 20% of the points kept by each method'
+set multiplot layout 4,4 title 'lion, 20% of the points kept by each method'
 unset key
 unset tics
 unset border
@@ -30,4 +30,14 @@ set title 'CGAL hierarchy'
 splot 'points/lion__cgal_hierarchy.txt' using 1:3:2:3 with dots lc palette
 set title 'CGAL random'
 splot 'points/lion__cgal_random.txt' using 1:3:2:3 with dots lc palette
+set title 'PCL voxel grid'
+splot 'points/lion__pcl_voxel_grid.txt' using 1:3:2:3 with dots lc palette
+set title 'PCL uniform sampling'
+splot 'points/lion__pcl_uniform_sampling.txt' using 1:3:2:3 with dots lc palette
+set title 'PCL normal space sampling'
+splot 'points/lion__pcl_normal_space_sampling.txt' using 1:3:2:3 with dots lc palette
+set title 'Open3D voxel down-sample'
+splot 'points/lion__open3d_voxel_down_sample.txt' using 1:3:2:3 with dots lc palette
+set title 'Open3D farthest point'
+splot 'points/lion__open3d_farthest_point.txt' using 1:3:2:3 with dots lc palette
 unset multiplot

@@ -1,6 +1,6 @@
-set terminal pngcairo noenhanced size 1800,1290 font 'sans,10'
+set terminal pngcairo noenhanced size 1800,2150 font 'sans,10'
 set output 'pictures_replica_1.2mm.png'
-set multiplot layout 3,4 title 'replica_1.2mm, 10% of the points kept by each method'
+set multiplot layout 5,4 title 'replica_1.2mm, 10% of the points kept by each method'
 unset key
 unset tics
 unset border
@@ -32,4 +32,14 @@ set title 'CGAL WLOP'
 plot 'points/replica_1.2mm__cgal_wlop.txt' using 1:2:4 with dots lc palette
 set title 'CGAL random'
 plot 'points/replica_1.2mm__cgal_random.txt' using 1:2:4 with dots lc palette
+set title 'PCL voxel grid'
+plot 'points/replica_1.2mm__pcl_voxel_grid.txt' using 1:2:4 with dots lc palette
+set title 'PCL uniform sampling'
+plot 'points/replica_1.2mm__pcl_uniform_sampling.txt' using 1:2:4 with dots lc palette
+set title 'PCL normal space sampling'
+plot 'points/replica_1.2mm__pcl_normal_space_sampling.txt' using 1:2:4 with dots lc palette
+set title 'Open3D voxel down-sample'
+plot 'points/replica_1.2mm__open3d_voxel_down_sample.txt' using 1:2:4 with dots lc palette
+set title 'Open3D farthest point'
+plot 'points/replica_1.2mm__open3d_farthest_point.txt' using 1:2:4 with dots lc palette
 unset multiplot
