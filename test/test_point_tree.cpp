@@ -73,7 +73,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     members.push_back(i);
   ESI::Point_tree tree(p, members.begin(), members.end());
   std::vector<ESI::Neighbor> best;
-  for (std::size_t count : { std::size_t(1), std::size_t(10), std::size_t(40) })
+  for (std::size_t count : { std::size_t(0), std::size_t(1), std::size_t(10), std::size_t(40) })
     for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 7)
     {
       tree.nearest(q, count, best);

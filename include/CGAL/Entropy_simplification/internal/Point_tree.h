@@ -80,7 +80,7 @@ public:
   void nearest(Index q, std::size_t count, std::vector<Neighbor>& best) const
   {
     best.clear();
-    if (!m_order.empty())
+    if (!m_order.empty() && count > 0)
       search_nearest(0, q, count, best);
   }
 
