@@ -10,12 +10,12 @@
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
-#include <CGAL/Entropy_simplification/internal/Indexed_heap.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -115,13 +115,13 @@ public:
     {
       const Elimination_stage stage = next_stage(m_count, target, m_field.effective_area);
       gather_neighbors<ConcurrencyTag>(stage);
-      if (!eliminate(stage, removed))
+      if (!eliminate<ConcurrencyTag>(stage, removed))
         return false;
     }
     // the relocation that follows needs none of the elimination's memory
     std::vector<std::size_t>().swap(m_first);
     std::vector<Index>().swap(m_neighbors);
-    std::vector<std::int64_t>().swap(m_weight);
+    std::vector<std::atomic<std::int64_t> >().swap(m_weight);
     return true;
   }
 
@@ -142,7 +142,7 @@ private:
 
     m_first.assign(m_points.size() + 1, 0);
     m_neighbors.clear();
-    m_weight.assign(m_points.size(), 0);
+    std::vector<std::atomic<std::int64_t> >(m_points.size()).swap(m_weight);
     std::vector<std::vector<Index> > lists((std::min)(present.size(), gather_block));
     for (std::size_t first = 0; first < present.size(); first += gather_block)
     {
@@ -154,12 +154,14 @@ private:
           thread_local std::vector<Index> inside;
           tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
           lists[r].clear();
+          std::int64_t sum = 0;
           for (Index j : inside)
             if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
             {
               lists[r].push_back(j);
-              m_weight[i] += w;
+              sum += w;
             }
+          m_weight[i].store(sum, std::memory_order_relaxed);
         },
         [](std::size_t) { return true; });
       for (std::size_t r = 0; r < count; ++r)
@@ -177,33 +179,124 @@ private:
       m_first[i + 1] += m_first[i];
   }
 
-  template <typename Removed>
-  bool eliminate(const Elimination_stage& stage, const Removed& removed)
+  // A point's place in the order of removal: the greatest weight first,
+  // ties to the lowest input position.
+  struct Key
   {
-    std::vector<Indexed_heap::Entry> entries;
-    entries.reserve(m_count);
+    std::int64_t weight;
+    Index input_position;
+    bool operator<(const Key& other) const // comes first
+    {
+      return weight > other.weight || (weight == other.weight && input_position < other.input_position);
+    }
+  };
+
+  // Weights are read between rounds only, never while a round lowers them.
+  Key key(Index i) const { return Key{ m_weight[i].load(std::memory_order_relaxed), m_points.input_position[i] }; }
+
+  // Whether `i` comes before every present point within its reach.
+  bool is_local_first(Index i) const
+  {
+    const Key own = key(i);
+    for (std::size_t e = m_first[i]; e < m_first[i + 1]; ++e)
+      if (is_present(m_neighbors[e]) && key(m_neighbors[e]) < own)
+        return false;
+    return true;
+  }
+
+  // The `count` present points that come first, in index order, and the key
+  // of the last of them.
+  std::pair<std::vector<Index>, Key> first_present(std::size_t count) const
+  {
+    std::vector<Index> present;
+    present.reserve(m_count);
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
-        entries.push_back(Indexed_heap::Entry{ -double(m_weight[i]), m_points.input_position[i], i });
-    Indexed_heap heap(std::move(entries), m_points.size());
+        present.push_back(i);
+    std::nth_element(present.begin(), present.begin() + std::ptrdiff_t(count - 1), present.end(),
+                     [&](Index a, Index b) { return key(a) < key(b); });
+    const Key last = key(present[count - 1]);
+    present.resize(count);
+    std::sort(present.begin(), present.end());
+    return { std::move(present), last };
+  }
 
+  struct Removal
+  {
+    Key key;
+    Index id;
+  };
+
+  // One round: removes every candidate that comes before all its present
+  // neighbours, and drops the candidates that no longer come before
+  // `threshold`. The removed points are no neighbours of each other, so
+  // their neighbours' weights can be lowered in parallel, exactly, in
+  // integers.
+  template <typename ConcurrencyTag>
+  void remove_local_firsts(std::vector<Index>& candidates, const Key& threshold, const Elimination_stage& stage,
+                           std::vector<Removal>& removals)
+  {
+    enum Status : char { dropped, waiting, removable };
+    std::vector<char> status(candidates.size());
+    for_each_index<ConcurrencyTag>(
+      candidates.size(),
+      [&](std::size_t r) {
+        const Index i = candidates[r];
+        status[r] = threshold < key(i) ? dropped : is_local_first(i) ? removable : waiting;
+      },
+      [](std::size_t) { return true; });
+    const std::size_t first_removal = removals.size();
+    std::size_t waiting_count = 0;
+    for (std::size_t r = 0; r < candidates.size(); ++r)
+    {
+      const Index i = candidates[r];
+      if (status[r] == removable)
+      {
+        removals.push_back(Removal{ key(i), i });
+        m_present[i] = 0;
+      }
+      else if (status[r] == waiting)
+        candidates[waiting_count++] = i;
+    }
+    candidates.resize(waiting_count);
+    m_count -= removals.size() - first_removal;
+    for_each_index<ConcurrencyTag>(
+      removals.size() - first_removal,
+      [&](std::size_t r) {
+        const Index p = removals[first_removal + r].id;
+        for (std::size_t e = m_first[p]; e < m_first[p + 1]; ++e)
+          if (is_present(m_neighbors[e]))
+            m_weight[m_neighbors[e]].fetch_sub(weight(p, m_neighbors[e], stage), std::memory_order_relaxed);
+      },
+      [](std::size_t) { return true; });
+  }
+
+  // The stage's removals in rounds that give the order of removing the
+  // first point one at a time. That order removes, before any of its
+  // neighbours, a point that comes before them all and among the `remaining`
+  // first (the weights only decrease, and fewer than `remaining` points come
+  // before it), and removing it sooner changes no other removal, as it
+  // lowers only the weights of points that come after it. So each round
+  // removes all such points at once; sorted by their weight when removed,
+  // the removals are that order. The threshold, the `remaining`-th point
+  // when it is taken, stays valid until no candidate comes before it: at
+  // most as many points as removals left come before it.
+  template <typename ConcurrencyTag, typename Removed>
+  bool eliminate(const Elimination_stage& stage, const Removed& removed)
+  {
+    std::vector<Removal> removals;
+    removals.reserve(m_count - stage.target);
     while (m_count > stage.target)
     {
-      const Index p = heap.top().id;
-      heap.pop();
-      m_present[p] = 0;
-      --m_count;
-      for (std::size_t e = m_first[p]; e < m_first[p + 1]; ++e)
-      {
-        const Index j = m_neighbors[e];
-        if (!is_present(j))
-          continue;
-        m_weight[j] -= weight(p, j, stage);
-        heap.update(j, -double(m_weight[j]));
-      }
-      if (!removed(p))
-        return false;
+      auto [candidates, threshold] = first_present(m_count - stage.target);
+      while (!candidates.empty())
+        remove_local_firsts<ConcurrencyTag>(candidates, threshold, stage, removals);
     }
+    std::sort(removals.begin(), removals.end(),
+              [](const Removal& a, const Removal& b) { return a.key < b.key; });
+    for (const Removal& r : removals)
+      if (!removed(r.id))
+        return false;
     return true;
   }
 
@@ -223,7 +316,7 @@ private:
   // more than 2^32 pairs within reach
   std::vector<std::size_t> m_first;
   std::vector<Index> m_neighbors;   // CSR neighbours
-  std::vector<std::int64_t> m_weight;
+  std::vector<std::atomic<std::int64_t> > m_weight;
 };
 
 } // namespace internal
