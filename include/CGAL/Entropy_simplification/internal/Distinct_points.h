@@ -7,16 +7,9 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
 
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_sort.h>
-#endif
-
-#include <algorithm>
 #include <tuple>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,12 +48,7 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
     order[i] = Index(i);
   auto key = [&points](Index i) { return std::make_tuple(points[i].x(), points[i].y(), points[i].z(), i); };
   auto before = [&key](Index a, Index b) { return key(a) < key(b); };
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    tbb::parallel_sort(order.begin(), order.end(), before);
-  else
-#endif
-    std::sort(order.begin(), order.end(), before);
+  sort_by<ConcurrencyTag>(order.begin(), order.end(), before);
 
   // the input position of the representative of each point
   std::vector<Index> first(points.size());

@@ -204,21 +204,26 @@ private:
     return true;
   }
 
-  // The `count` present points that come first, in index order, and the key
-  // of the last of them.
+  // The key of the `count`-th present point in the order of removal, and
+  // the points up to it, in index order.
   std::pair<std::vector<Index>, Key> first_present(std::size_t count) const
   {
-    std::vector<Index> present;
-    present.reserve(m_count);
+    Key last;
+    { // the keys go before the points are listed
+      std::vector<Key> keys;
+      keys.reserve(m_count);
+      for (Index i = 0; i < Index(m_points.size()); ++i)
+        if (is_present(i))
+          keys.push_back(key(i));
+      std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - 1), keys.end());
+      last = keys[count - 1];
+    }
+    std::vector<Index> first;
+    first.reserve(count);
     for (Index i = 0; i < Index(m_points.size()); ++i)
-      if (is_present(i))
-        present.push_back(i);
-    std::nth_element(present.begin(), present.begin() + std::ptrdiff_t(count - 1), present.end(),
-                     [&](Index a, Index b) { return key(a) < key(b); });
-    const Key last = key(present[count - 1]);
-    present.resize(count);
-    std::sort(present.begin(), present.end());
-    return { std::move(present), last };
+      if (is_present(i) && !(last < key(i)))
+        first.push_back(i);
+    return { std::move(first), last };
   }
 
   struct Removal
@@ -292,8 +297,8 @@ private:
       while (!candidates.empty())
         remove_local_firsts<ConcurrencyTag>(candidates, threshold, stage, removals);
     }
-    std::sort(removals.begin(), removals.end(),
-              [](const Removal& a, const Removal& b) { return a.key < b.key; });
+    sort_by<ConcurrencyTag>(removals.begin(), removals.end(),
+                            [](const Removal& a, const Removal& b) { return a.key < b.key; });
     for (const Removal& r : removals)
       if (!removed(r.id))
         return false;

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A loop over indices, parallel with CGAL::Parallel_tag, that reports progress
-// on the calling thread.
+// on the calling thread, and a sort, parallel with CGAL::Parallel_tag.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
@@ -12,6 +12,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #endif
 
 #include <algorithm>
@@ -57,6 +58,19 @@ bool for_each_index(std::size_t n, const Function& f, const Progress& progress)
       return false;
   }
   return true;
+}
+
+// Sorts [first, beyond) by `less`, in parallel with CGAL::Parallel_tag. The
+// order must be total for the result not to depend on the tag.
+template <typename ConcurrencyTag, typename Iterator, typename Less>
+void sort_by(Iterator first, Iterator beyond, const Less& less)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    tbb::parallel_sort(first, beyond, less);
+  else
+#endif
+    std::sort(first, beyond, less);
 }
 
 } // namespace internal
