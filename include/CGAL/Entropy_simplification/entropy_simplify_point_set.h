@@ -26,6 +26,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -266,17 +267,19 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   if (target == n && !has_normal_map)
     return points.end();
 
+  // the kept points' normals wait for the run to end, so that the iterators
+  // to the range are not held at its peak of memory
+  std::vector<std::pair<ES::Index, ES::Working_vector> > normals;
+  const std::vector<ES::Index> removed = ES::simplify_points<ConcurrencyTag>(
+    std::move(distinct), k, target, options, callback, has_normal_map,
+    [&](ES::Index position, const ES::Working_vector& n) { normals.emplace_back(position, n); });
+
   const auto at = ES::iterators_of(points);
-  auto write_normal = [&](ES::Index position, const ES::Working_vector& n) {
-    if constexpr (has_normal_map)
+  if constexpr (has_normal_map)
+    for (const auto& [position, n] : normals)
       put(get_parameter(np, internal_np::normal_map), *at[position],
           typename Kernel::Vector_3(typename Kernel::FT(n.x()), typename Kernel::FT(n.y()),
                                     typename Kernel::FT(n.z())));
-  };
-  const std::vector<ES::Index> removed =
-    ES::simplify_points<ConcurrencyTag>(std::move(distinct), k, target, options, callback, has_normal_map,
-                                        write_normal);
-
   const std::size_t kept = ES::order_by_removal(at, removed);
   return kept == at.size() ? points.end() : at[kept];
 }

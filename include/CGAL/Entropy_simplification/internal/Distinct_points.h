@@ -79,6 +79,23 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
   return result;
 }
 
+// The input positions of the `distinct_count` representatives, ascending:
+// those of no copy, `copies` being ascending.
+inline std::vector<Index> positions_of_no_copy(const std::vector<Index>& copies, std::size_t distinct_count)
+{
+  std::vector<Index> positions;
+  positions.reserve(distinct_count);
+  std::size_t c = 0;
+  for (Index p = 0; positions.size() < distinct_count; ++p)
+  {
+    if (c < copies.size() && copies[c] == p)
+      ++c;
+    else
+      positions.push_back(p);
+  }
+  return positions;
+}
+
 } // namespace internal
 } // namespace Entropy_simplification
 } // namespace CGAL

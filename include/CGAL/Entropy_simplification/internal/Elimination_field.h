@@ -23,11 +23,11 @@ namespace Entropy_simplification {
 namespace internal {
 
 // What the elimination needs of each point, computed once on the input from
-// its k nearest neighbours: its normal, and the factor of its interaction
-// radius (1 off features, smaller on them).
+// its k nearest neighbours: the factor of its interaction radius (1 off
+// features, smaller on them). The normals it is computed from are not kept:
+// only the kept points' are written, estimated again at the end.
 struct Elimination_field
 {
-  std::vector<Working_vector> normals;
   std::vector<double> scale;
   // the area the points sample, each point's share weighted by the density
   // its scale asks for (1 / scale^2)
@@ -49,10 +49,7 @@ bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Ind
         m,
         [&](std::size_t r) {
           const Index i = subset[r];
-          const Index* near = neighbors(i);
-          normals[slot(i)] = estimate_normal(estimation, k + 1, [&](std::size_t j) -> const Working_point& {
-            return points.points[j == 0 ? i : near[j - 1]];
-          });
+          normals[slot(i)] = neighborhood_normal(points, i, neighbors(i), k, estimation);
         },
         [&](std::size_t done) { return progress(0.5 * double(done) / double(m)); }))
     return false;
@@ -152,21 +149,27 @@ inline void set_scales(const Indexed_points& points, const std::vector<double>& 
     field.effective_area += a;
 }
 
-// The field from the k nearest neighbours of each point, `neighbors(i)`
-// giving them nearest first: normals estimated on each point and its
-// neighbours; the feature strength the greater of that of the entropy of the
-// normals of the same neighbourhood and that of the coarse scale.
-template <typename ConcurrencyTag, typename NeighborsOf, typename Progress>
+// The field from `knn`, the k nearest neighbours of each point nearest first
+// (those of point i at knn[i * k]), which it frees once used: normals
+// estimated on each point and its neighbours; the feature strength the
+// greater of that of the entropy of the normals of the same neighbourhood
+// and that of the coarse scale.
+template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, const std::vector<Index>& coarse, unsigned int k,
-                               const Options& options, const NeighborsOf& neighbors, Elimination_field& field,
+                               const Options& options, std::vector<Index> knn, Elimination_field& field,
                                const Progress& progress)
 {
   const std::size_t n = points.size();
-  field.normals.assign(n, CGAL::NULL_VECTOR);
+  const auto neighbors = [&](Index i) { return &knn[std::size_t(i) * k]; };
   std::vector<double> entropy(n);
-  if (!estimate_normal_entropy<ConcurrencyTag>(points, all_indices(n), k, options.normal_estimation, neighbors,
-                                               [](Index i) { return i; }, field.normals, entropy, progress))
-    return false;
+  {
+    std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
+    if (!estimate_normal_entropy<ConcurrencyTag>(points, all_indices(n), k, options.normal_estimation, neighbors,
+                                                 [](Index i) { return i; }, normals, entropy, progress))
+      return false;
+  }
+  const std::vector<double> area = sampled_areas(points, k, neighbors);
+  std::vector<Index>().swap(knn);
 
   std::vector<double> strength =
     coarse_feature_strength<ConcurrencyTag>(points, coarse, k, options.normal_estimation);
@@ -174,8 +177,26 @@ bool compute_elimination_field(const Indexed_points& points, const std::vector<I
   for (std::size_t i = 0; i < n; ++i)
     strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]);
 
-  set_scales(points, sampled_areas(points, k, neighbors), strength, options.feature_weight, field);
+  set_scales(points, area, strength, options.feature_weight, field);
   return true;
+}
+
+// The normal of each point of `subset`, estimated on it and its k nearest
+// neighbours among all the points, as the field estimates it.
+template <typename ConcurrencyTag>
+std::vector<Working_vector> estimate_normals(const Indexed_points& points, const std::vector<Index>& subset,
+                                             unsigned int k, Normal_estimation estimation)
+{
+  const std::vector<Index> all = all_indices(points.size());
+  const Point_tree tree(points, all.begin(), all.end(), ConcurrencyTag());
+  std::vector<Index> knn;
+  nearest_neighbor_table<ConcurrencyTag>(tree, subset, k, knn, [](std::size_t) { return true; });
+  std::vector<Working_vector> normals(subset.size());
+  for_each_index<ConcurrencyTag>(
+    subset.size(),
+    [&](std::size_t r) { normals[r] = neighborhood_normal(points, subset[r], &knn[r * k], k, estimation); },
+    [](std::size_t) { return true; });
+  return normals;
 }
 
 } // namespace internal

@@ -91,11 +91,17 @@ public:
   // The normal of a present point, estimated on its present neighbours.
   Working_vector normal(Index i) const
   {
-    const Index* neighbors = m_knn.neighbors(i);
-    return estimate_normal(m_options.normal_estimation, m_k + 1,
-                           [&](std::size_t j) -> const Working_point& {
-                             return m_points.points[j == 0 ? i : neighbors[j - 1]];
-                           });
+    return neighborhood_normal(m_points, i, m_knn.neighbors(i), m_k, m_options.normal_estimation);
+  }
+
+  // The normals of the points `subset`, as `normal` gives them.
+  template <typename ConcurrencyTag>
+  std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const
+  {
+    std::vector<Working_vector> normals(subset.size());
+    for_each_index<ConcurrencyTag>(
+      subset.size(), [&](std::size_t r) { normals[r] = normal(subset[r]); }, [](std::size_t) { return true; });
+    return normals;
   }
 
   // Eq. 5 over a present point and its present neighbours.

@@ -95,15 +95,19 @@ public:
     std::vector<Index> coarse;
     for (std::size_t i = 0; i < n; i += coarse_stride)
       coarse.push_back(Index(i));
-    if (!compute_elimination_field<ConcurrencyTag>(
-          m_points, coarse, m_k, m_options, [&](Index i) { return &knn[std::size_t(i) * m_k]; }, m_field,
-          [&](double f) { return progress(0.5 + 0.5 * f); }))
+    if (!compute_elimination_field<ConcurrencyTag>(m_points, coarse, m_k, m_options, std::move(knn), m_field,
+                                                   [&](double f) { return progress(0.5 + 0.5 * f); }))
       return false;
     return true;
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }
-  const Working_vector& normal(Index i) const { return m_field.normals[i]; }
+  // The normals of the points `subset`, as the field estimated them.
+  template <typename ConcurrencyTag>
+  std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const
+  {
+    return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
+  }
   const Elimination_field& field() const { return m_field; }
 
   // Removes points down to `target`, calling `removed(i)` after each removal;
@@ -126,34 +130,46 @@ public:
   }
 
 private:
-  // For each present point, the present points within its reach, in CSR
-  // form, and its weight. The points are taken by blocks, each gathered in
-  // parallel then appended in index order, so that the lists in the making
-  // never hold more than a block.
+  // A tree of the present points, with their largest scales recorded.
   template <typename ConcurrencyTag>
-  void gather_neighbors(const Elimination_stage& stage)
+  Point_tree present_tree() const
   {
     std::vector<Index> present;
+    present.reserve(m_count);
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
         present.push_back(i);
     Point_tree tree(m_points, present.begin(), present.end(), ConcurrencyTag());
     tree.record_largest_scales(m_field.scale);
+    return tree;
+  }
 
-    m_first.assign(m_points.size() + 1, 0);
+  // For each present point, the present points within its reach, in CSR
+  // form, and its weight. The points are taken by blocks of indices, each
+  // gathered in parallel then appended in index order, so that the lists in
+  // the making never hold more than a block.
+  template <typename ConcurrencyTag>
+  void gather_neighbors(const Elimination_stage& stage)
+  {
+    const Point_tree tree = present_tree<ConcurrencyTag>();
+    const std::size_t n = m_points.size();
+    m_first.assign(n + 1, 0);
     m_neighbors.clear();
-    std::vector<std::atomic<std::int64_t> >(m_points.size()).swap(m_weight);
-    std::vector<std::vector<Index> > lists((std::min)(present.size(), gather_block));
-    for (std::size_t first = 0; first < present.size(); first += gather_block)
+    std::vector<std::atomic<std::int64_t> >(n).swap(m_weight);
+    std::vector<std::vector<Index> > lists((std::min)(n, gather_block));
+    std::size_t gathered = 0;
+    for (std::size_t first = 0; first < n; first += gather_block)
     {
-      const std::size_t count = (std::min)(gather_block, present.size() - first);
+      const std::size_t count = (std::min)(gather_block, n - first);
       for_each_index<ConcurrencyTag>(
         count,
         [&](std::size_t r) {
-          const Index i = present[first + r];
+          const Index i = Index(first + r);
           thread_local std::vector<Index> inside;
-          tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
           lists[r].clear();
+          if (!is_present(i))
+            return;
+          tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
           std::int64_t sum = 0;
           for (Index j : inside)
             if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
@@ -164,18 +180,21 @@ private:
           m_weight[i].store(sum, std::memory_order_relaxed);
         },
         [](std::size_t) { return true; });
+      const bool first_gathered = gathered == 0;
       for (std::size_t r = 0; r < count; ++r)
       {
-        m_first[present[first + r] + 1] = lists[r].size();
+        gathered += is_present(Index(first + r)) ? 1 : 0;
+        m_first[first + r + 1] = lists[r].size();
         m_neighbors.insert(m_neighbors.end(), lists[r].begin(), lists[r].end());
       }
-      // the first block predicts the whole, so that the array rarely grows
-      // by doubling, which would hold twice the memory at the peak
-      if (first == 0)
-        m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(present.size()) / double(count)));
+      // the first points gathered predict the whole, so that the array
+      // rarely grows by doubling, which would hold twice the memory at the
+      // peak
+      if (first_gathered && gathered > 0)
+        m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(m_count) / double(gathered)));
     }
     // counts to offsets: the lists were appended in index order
-    for (std::size_t i = 0; i < m_points.size(); ++i)
+    for (std::size_t i = 0; i < n; ++i)
       m_first[i + 1] += m_first[i];
   }
 

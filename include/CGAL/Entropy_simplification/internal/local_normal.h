@@ -88,6 +88,16 @@ Working_vector estimate_normal(Normal_estimation method, std::size_t m, PointAt 
   return method == Normal_estimation::jet ? jet_normal(m, point) : pca_normal(m, point);
 }
 
+// The normal of point `i` estimated on it and `near`, its k nearest
+// neighbours, `estimation` choosing the method.
+inline Working_vector neighborhood_normal(const Indexed_points& points, Index i, const Index* near, unsigned int k,
+                                          Normal_estimation estimation)
+{
+  return estimate_normal(estimation, k + 1, [&](std::size_t j) -> const Working_point& {
+    return points.points[j == 0 ? i : near[j - 1]];
+  });
+}
+
 // The smallest k each estimator accepts: a plane needs 3 points, a jet of
 // degree 2 needs 6.
 inline unsigned int minimum_k(Normal_estimation method)

@@ -80,16 +80,23 @@ void relocate(const Indexed_points& points, Engine_run& run)
     run.removed[rank[swap.second]] = swap.first;
 }
 
-// Writes the normal of each present point, and returns the removals as
-// positions in the points given to `sort_spatially`.
-template <typename Engine, typename NormalWriter>
+// Writes the normal of each present point when `with_normals`, and returns
+// the removals as positions in the points given to `sort_spatially`.
+template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
 std::vector<Index> finish(const Engine& engine, const Indexed_points& points, const Engine_run& run,
-                          const NormalWriter& write_normal)
+                          bool with_normals, const NormalWriter& write_normal)
 {
-  const std::vector<char> present = present_after(run, points.size());
-  for (Index i = 0; i < Index(points.size()); ++i)
-    if (present[i])
-      write_normal(points.input_position[i], engine.normal(i));
+  if (with_normals)
+  {
+    const std::vector<char> present = present_after(run, points.size());
+    std::vector<Index> kept;
+    for (Index i = 0; i < Index(points.size()); ++i)
+      if (present[i])
+        kept.push_back(i);
+    const std::vector<Working_vector> normals = engine.template normals_of<ConcurrencyTag>(kept);
+    for (std::size_t r = 0; r < kept.size(); ++r)
+      write_normal(points.input_position[kept[r]], normals[r]);
+  }
   std::vector<Index> removed;
   removed.reserve(run.removed.size());
   for (Index i : run.removed)
@@ -104,7 +111,7 @@ template <typename ConcurrencyTag, typename NormalWriter>
 std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_point>&& points, unsigned int k,
                                                             std::size_t target, const Options& options,
                                                             const std::function<bool(double)>& callback,
-                                                            const NormalWriter& write_normal)
+                                                            bool with_normals, const NormalWriter& write_normal)
 {
   // the paper's plane is fitted in input order; then the points in input
   // order are done with, and their memory goes back before the run
@@ -118,7 +125,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
     const Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
     if (!run.initialized)
       return std::nullopt;
-    return finish(engine, indexed, run, write_normal);
+    return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
   }
   Weighted_elimination engine(indexed, k, options);
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
@@ -126,7 +133,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
     return std::nullopt;
   if (run.completed)
     relocate<ConcurrencyTag>(indexed, run);
-  return finish(engine, indexed, run, write_normal);
+  return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
 }
 
 // The method of `options.mode` on a range down to `target` points: the
@@ -134,7 +141,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
 // coincident points go first, the last in input order first, so that they
 // come back in input order once every distinct point is kept; a kept copy
 // gets the normal of its representative. The distinct points' coordinates
-// are released once sorted. `write_normal(position, normal)`
+// are released once sorted, their input positions during the run. `write_normal(position, normal)`
 // receives the normal of each kept point when `with_normals`. Nothing is
 // removed when the callback stops the initialisation.
 template <typename ConcurrencyTag, typename NormalWriter>
@@ -142,27 +149,36 @@ std::vector<Index> simplify_points(Distinct_points&& distinct, unsigned int k, s
                                    const Options& options, const std::function<bool(double)>& callback,
                                    bool with_normals, const NormalWriter& write_normal)
 {
-  const std::size_t kept_copies = target > distinct.size() ? target - distinct.size() : 0;
+  const std::size_t distinct_count = distinct.size();
+  const std::size_t kept_copies = target > distinct_count ? target - distinct_count : 0;
   std::vector<Index> removed;
   for (std::size_t c = distinct.copies.size(); c-- > kept_copies;)
     removed.push_back(distinct.copies[c]);
-  if (target >= distinct.size() && !with_normals)
+  if (target >= distinct_count && !with_normals)
     return removed;
 
-  std::vector<Working_vector> normal_of_slot(kept_copies > 0 ? distinct.size() : 0);
+  // The representatives' input positions are those of no copy: released
+  // during the run, which has its peak of memory there, and listed again.
+  std::vector<Index>().swap(distinct.input_position);
+  std::vector<std::pair<Index, Working_vector> > normal_of_slot;
   const std::optional<std::vector<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
-    std::move(distinct.points), k, (std::min)(target, distinct.size()), options, callback,
-    [&](Index slot, const Working_vector& normal) {
-      write_normal(distinct.input_position[slot], normal);
-      if (kept_copies > 0)
-        normal_of_slot[slot] = normal;
-    });
+    std::move(distinct.points), k, (std::min)(target, distinct_count), options, callback, with_normals,
+    [&](Index slot, const Working_vector& normal) { normal_of_slot.emplace_back(slot, normal); });
   if (!removed_distinct)
     return {};
+  const std::vector<Index> input_position = positions_of_no_copy(distinct.copies, distinct_count);
   for (Index slot : *removed_distinct)
-    removed.push_back(distinct.input_position[slot]);
-  for (std::size_t c = 0; c < kept_copies; ++c)
-    write_normal(distinct.copies[c], normal_of_slot[distinct.representative[c]]);
+    removed.push_back(input_position[slot]);
+  for (const auto& [slot, normal] : normal_of_slot)
+    write_normal(input_position[slot], normal);
+  if (kept_copies > 0)
+  {
+    std::vector<Working_vector> normal_of_representative(distinct_count);
+    for (const auto& [slot, normal] : normal_of_slot)
+      normal_of_representative[slot] = normal;
+    for (std::size_t c = 0; c < kept_copies; ++c)
+      write_normal(distinct.copies[c], normal_of_representative[distinct.representative[c]]);
+  }
   return removed;
 }
 
