@@ -22,6 +22,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -97,14 +98,14 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
                                                internal_np::geom_traits_t>::value,
                 "compute_mean_normal_angle_entropy() reads only the named parameters point_map and geom_traits");
 
-  const std::vector<ES::Working_point> input = ES::working_points(points, np);
+  std::vector<ES::Working_point> input = ES::working_points(points, np);
   if (k < ES::minimum_k(options.normal_estimation) || input.size() < std::size_t(k) + 1)
     throw std::invalid_argument("compute_mean_normal_angle_entropy: k = " + std::to_string(k) +
                                 " is too small for the normal estimation or too large for " +
                                 std::to_string(input.size()) + " points");
 
   const ES::Working_vector reference = ES::reference_normal(options, input);
-  const ES::Indexed_points indexed = ES::sort_spatially<ConcurrencyTag>(input);
+  const ES::Indexed_points indexed = ES::sort_spatially<ConcurrencyTag>(std::move(input));
   ES::Paper_simplification state(indexed, k, options, reference);
   state.template initialize<ConcurrencyTag>([](double) { return true; });
 

@@ -134,11 +134,12 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
 
    \tparam ConcurrencyTag enables sequential versus parallel estimation and
    neighbour searches. Possible values are `Sequential_tag`, `Parallel_tag`,
-   and `Parallel_if_available_tag`. The removals are sequential; the result
-   does not depend on the tag.
+   and `Parallel_if_available_tag`. The default mode's removals also run in
+   parallel rounds; those of `Mode::paper` are sequential. The result does not
+   depend on the tag.
    \tparam PointRange is a model of `Range`. The value type of its iterator is
    the key type of the named parameter `point_map`; its elements must be
-   move-assignable.
+   move-constructible and move-assignable.
 
    \param points input point range
    \param k number of neighbours of each point, for its normal and its
@@ -280,7 +281,7 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
       put(get_parameter(np, internal_np::normal_map), *at[position],
           typename Kernel::Vector_3(typename Kernel::FT(n.x()), typename Kernel::FT(n.y()),
                                     typename Kernel::FT(n.z())));
-  const std::size_t kept = ES::order_by_removal(at, removed);
+  const std::size_t kept = ES::order_by_removal<ConcurrencyTag>(at, removed);
   return kept == at.size() ? points.end() : at[kept];
 }
 

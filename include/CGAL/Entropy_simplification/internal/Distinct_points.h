@@ -9,6 +9,7 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
+#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -43,23 +44,38 @@ struct Distinct_points
 template <typename ConcurrencyTag>
 Distinct_points collapse_duplicates(std::vector<Working_point> points)
 {
-  std::vector<Index> order(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    order[i] = Index(i);
-  auto key = [&points](Index i) { return std::make_tuple(points[i].x(), points[i].y(), points[i].z(), i); };
-  auto before = [&key](Index a, Index b) { return key(a) < key(b); };
-  sort_by<ConcurrencyTag>(order.begin(), order.end(), before);
+  // the copies are sorted themselves, not their indices: a sort that moves
+  // them reads memory in order, where one through indices would not
+  struct Positioned_point
+  {
+    std::tuple<double, double, double, Index> key;
+    bool operator<(const Positioned_point& other) const { return key < other.key; }
+  };
+  std::vector<Positioned_point> sorted(points.size());
+  for_each_index<ConcurrencyTag>(
+    points.size(),
+    [&](std::size_t i) { sorted[i].key = std::make_tuple(points[i].x(), points[i].y(), points[i].z(), Index(i)); },
+    [](std::size_t) { return true; });
+  sort_by<ConcurrencyTag>(sorted.begin(), sorted.end(), std::less<Positioned_point>());
 
   // the input position of the representative of each point
   std::vector<Index> first(points.size());
-  for (std::size_t r = 0; r < order.size(); ++r)
-    first[order[r]] = r > 0 && points[order[r]] == points[order[r - 1]] ? first[order[r - 1]] : order[r];
+  Index representative = 0;
+  for (std::size_t r = 0; r < sorted.size(); ++r)
+  {
+    const auto& [x, y, z, position] = sorted[r].key;
+    const auto& [px, py, pz, previous] = sorted[r == 0 ? 0 : r - 1].key;
+    if (r == 0 || !(x == px && y == py && z == pz))
+      representative = position;
+    first[position] = representative;
+  }
+  std::vector<Positioned_point>().swap(sorted);
 
   // The representatives move to the front of `points`, in input order: each
   // goes to a slot at or before its own, so the compaction is in place. The
-  // sorted order is done with: its memory holds the slots.
+  // slot of each representative is where it goes.
   Distinct_points result;
-  std::vector<Index>& slot = order;
+  std::vector<Index> slot(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     if (first[i] == i)

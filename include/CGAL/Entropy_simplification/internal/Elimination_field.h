@@ -110,12 +110,16 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
 
 // The area each point samples: k points in a disc of the radius of its k-th
 // nearest neighbour.
-template <typename NeighborsOf>
+template <typename ConcurrencyTag, typename NeighborsOf>
 std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, const NeighborsOf& neighbors)
 {
   std::vector<double> area(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    area[i] = CGAL_PI * squared_distance(points.points[i], points.points[neighbors(Index(i))[k - 1]]) / double(k);
+  for_each_index<ConcurrencyTag>(
+    points.size(),
+    [&](std::size_t i) {
+      area[i] = CGAL_PI * squared_distance(points.points[i], points.points[neighbors(Index(i))[k - 1]]) / double(k);
+    },
+    [](std::size_t) { return true; });
   return area;
 }
 
@@ -124,8 +128,9 @@ std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, 
 // effective area, the sampled area weighted by the density each scale asks
 // for (1 / scale^2), summed in input order so that it does not depend on the
 // internal order.
-inline void set_scales(const Indexed_points& points, const std::vector<double>& area,
-                       const std::vector<double>& strength, double feature_weight, Elimination_field& field)
+template <typename ConcurrencyTag>
+void set_scales(const Indexed_points& points, const std::vector<double>& area, const std::vector<double>& strength,
+                double feature_weight, Elimination_field& field)
 {
   const std::size_t n = points.size();
   double total_area = 0., feature_area = 0.;
@@ -139,11 +144,13 @@ inline void set_scales(const Indexed_points& points, const std::vector<double>& 
 
   field.scale.resize(n);
   std::vector<double> weighted_area(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    field.scale[i] = interaction_scale(strength[i], weight) * density_scale(area[i], typical_area);
-    weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
-  }
+  for_each_index<ConcurrencyTag>(
+    n,
+    [&](std::size_t i) {
+      field.scale[i] = interaction_scale(strength[i], weight) * density_scale(area[i], typical_area);
+      weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
+    },
+    [](std::size_t) { return true; });
   field.effective_area = 0.;
   for (double a : weighted_area)
     field.effective_area += a;
@@ -168,16 +175,17 @@ bool compute_elimination_field(const Indexed_points& points, const std::vector<I
                                                  [](Index i) { return i; }, normals, entropy, progress))
       return false;
   }
-  const std::vector<double> area = sampled_areas(points, k, neighbors);
+  const std::vector<double> area = sampled_areas<ConcurrencyTag>(points, k, neighbors);
   std::vector<Index>().swap(knn);
 
   std::vector<double> strength =
     coarse_feature_strength<ConcurrencyTag>(points, coarse, k, options.normal_estimation);
   const double floor = entropy_noise_floor(entropy);
-  for (std::size_t i = 0; i < n; ++i)
-    strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]);
+  for_each_index<ConcurrencyTag>(
+    n, [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
+    [](std::size_t) { return true; });
 
-  set_scales(points, area, strength, options.feature_weight, field);
+  set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, field);
   return true;
 }
 

@@ -18,6 +18,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -85,26 +86,31 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
 
 // Reorders points given in input order along a Hilbert curve.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
-Indexed_points sort_spatially(const std::vector<Working_point>& points_in_input_order)
+Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)
 {
-  // The property map's key type is std::size_t, and spatial_sort wants it
-  // to be the sorted value type.
-  std::vector<std::size_t> order(points_in_input_order.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    order[i] = i;
+  // The points are sorted with their input positions rather than through
+  // them, so that the sort reads memory in order. spatial_sort shuffles with
+  // a fixed seed, so the order is reproducible, and what it compares does
+  // not depend on what it moves. Its parallel version makes the same splits,
+  // so the order is the same.
+  using Positioned = std::pair<Working_point, Index>;
+  std::vector<Positioned> sorted;
+  sorted.reserve(points_in_input_order.size());
+  for (std::size_t i = 0; i < points_in_input_order.size(); ++i)
+    sorted.emplace_back(points_in_input_order[i], Index(i));
+  std::vector<Working_point>().swap(points_in_input_order);
   using Sort_traits =
-    CGAL::Spatial_sort_traits_adapter_3<Working_kernel,
-                                        CGAL::Pointer_property_map<Working_point>::const_type>;
-  // spatial_sort shuffles with a fixed seed, so the order is reproducible.
-  // Its parallel version makes the same splits, so the order is the same.
-  CGAL::spatial_sort<ConcurrencyTag>(order.begin(), order.end(),
-                                     Sort_traits(CGAL::make_property_map(points_in_input_order)));
+    CGAL::Spatial_sort_traits_adapter_3<Working_kernel, CGAL::First_of_pair_property_map<Positioned> >;
+  CGAL::spatial_sort<ConcurrencyTag>(sorted.begin(), sorted.end(), Sort_traits());
 
   Indexed_points result;
-  result.input_position.assign(order.begin(), order.end());
-  result.points.reserve(points_in_input_order.size());
-  for (Index i : result.input_position)
-    result.points.push_back(points_in_input_order[i]);
+  result.points.reserve(sorted.size());
+  result.input_position.reserve(sorted.size());
+  for (const Positioned& p : sorted)
+  {
+    result.points.push_back(p.first);
+    result.input_position.push_back(p.second);
+  }
   return result;
 }
 

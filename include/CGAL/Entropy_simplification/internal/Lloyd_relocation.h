@@ -11,7 +11,7 @@
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <array>
+#include <algorithm>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -67,35 +67,80 @@ Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char
   return cells;
 }
 
-// The member of each cell nearest the cell's centroid (ties by input
-// position), as the new present points. Sums run in input order, so that
-// they do not depend on the internal order.
-inline std::vector<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells,
-                                                   const std::vector<Index>& by_input)
+// The members of each cell, in input order: those of cell c at
+// members[first[c], first[c + 1]).
+struct Cell_members
 {
-  const std::size_t m = cells.sites.size();
-  std::vector<std::array<double, 4> > sum(m, { 0., 0., 0., 0. });
-  for (Index i : by_input)
+  std::vector<std::size_t> first;
+  std::vector<Index> members;
+};
+
+// Counted into place by cell, then sorted by input position within each
+// cell: the cells are small, and their members close in the internal order.
+template <typename ConcurrencyTag>
+Cell_members members_by_cell(const Indexed_points& points, const Voronoi_cells& cells)
+{
+  Cell_members result;
+  result.first.assign(cells.sites.size() + 1, 0);
+  for (Index c : cells.site_of)
+    ++result.first[c + 1];
+  for (std::size_t c = 0; c < cells.sites.size(); ++c)
+    result.first[c + 1] += result.first[c];
+  std::vector<std::size_t> next(result.first.begin(), result.first.end() - 1);
+  result.members.resize(points.size());
+  for (Index i = 0; i < Index(points.size()); ++i)
+    result.members[next[cells.site_of[i]]++] = i;
+  for_each_index<ConcurrencyTag>(
+    cells.sites.size(),
+    [&](std::size_t c) {
+      std::sort(result.members.begin() + std::ptrdiff_t(result.first[c]),
+                result.members.begin() + std::ptrdiff_t(result.first[c + 1]),
+                [&](Index a, Index b) { return points.input_position[a] < points.input_position[b]; });
+    },
+    [](std::size_t) { return true; });
+  return result;
+}
+
+// The member of a cell nearest its centroid (ties by input position). The
+// centroid sums its members in input order, so that it does not depend on
+// the internal order.
+inline Index member_nearest_centroid(const Indexed_points& points, const Index* first, const Index* beyond)
+{
+  double x = 0., y = 0., z = 0.;
+  for (const Index* i = first; i != beyond; ++i)
   {
-    const Working_point& p = points.points[i];
-    std::array<double, 4>& s = sum[cells.site_of[i]];
-    s[0] += p.x();
-    s[1] += p.y();
-    s[2] += p.z();
-    s[3] += 1.;
+    x += points.points[*i].x();
+    y += points.points[*i].y();
+    z += points.points[*i].z();
   }
-  std::vector<Neighbor> best(m, Neighbor{ std::numeric_limits<double>::infinity(), 0, 0 });
-  for (Index i : by_input)
+  const double count = double(beyond - first);
+  const Working_point centroid(x / count, y / count, z / count);
+  Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
+  for (const Index* i = first; i != beyond; ++i)
   {
-    const Index c = cells.site_of[i];
-    const Working_point centroid(sum[c][0] / sum[c][3], sum[c][1] / sum[c][3], sum[c][2] / sum[c][3]);
-    const Neighbor candidate{ squared_distance(points.points[i], centroid), points.input_position[i], i };
-    if (candidate < best[c])
-      best[c] = candidate;
+    const Neighbor candidate{ squared_distance(points.points[*i], centroid), points.input_position[*i], *i };
+    if (candidate < best)
+      best = candidate;
   }
+  return best.id;
+}
+
+// The member of each cell nearest its centroid, as the new present points.
+template <typename ConcurrencyTag>
+std::vector<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells)
+{
+  const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
+  std::vector<Index> chosen(cells.sites.size());
+  for_each_index<ConcurrencyTag>(
+    cells.sites.size(),
+    [&](std::size_t c) {
+      chosen[c] = member_nearest_centroid(points, cell.members.data() + cell.first[c],
+                                          cell.members.data() + cell.first[c + 1]);
+    },
+    [](std::size_t) { return true; });
   std::vector<char> present(points.size(), 0);
-  for (const Neighbor& b : best)
-    present[b.id] = 1;
+  for (Index i : chosen)
+    present[i] = 1;
   return present;
 }
 
@@ -111,7 +156,7 @@ std::vector<std::pair<Index, Index> > relocate_within_input(const Indexed_points
   const std::vector<char> before = present;
   const std::vector<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
-    present = members_nearest_centroids(points, voronoi_cells<ConcurrencyTag>(points, present), by_input);
+    present = members_nearest_centroids<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present));
 
   std::vector<Index> gone, come;
   for (Index i : by_input)

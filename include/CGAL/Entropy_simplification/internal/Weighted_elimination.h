@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -223,25 +224,96 @@ private:
     return true;
   }
 
+  // The present points of each block of indices, in parallel.
+  template <typename ConcurrencyTag, typename Function>
+  void for_each_present_block(const Function& f) const
+  {
+    const std::size_t n = m_points.size();
+    for_each_index<ConcurrencyTag>(
+      (n + key_block - 1) / key_block,
+      [&](std::size_t b) {
+        for (Index i = Index(b * key_block); i < Index((std::min)(n, (b + 1) * key_block)); ++i)
+          if (is_present(i))
+            f(b, i);
+      },
+      [](std::size_t) { return true; });
+  }
+
+  // Two keys, from a sample of the present points, between which the
+  // `count`-th present point most likely falls; none on a side that the
+  // sample does not bound.
+  std::pair<std::optional<Key>, std::optional<Key> > likely_bounds(std::size_t count) const
+  {
+    std::vector<Key> sample;
+    for (std::size_t i = 0; i < m_points.size(); i += sample_stride)
+      if (is_present(Index(i)))
+        sample.push_back(key(Index(i)));
+    const double rank = double(count) / double(m_count) * double(sample.size());
+    const double margin = 4. * std::sqrt(double(sample.size())) + 8.;
+    auto at_rank = [&](double r) -> std::optional<Key> {
+      if (r < 0. || r >= double(sample.size()))
+        return std::nullopt;
+      std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(r), sample.end());
+      return sample[std::size_t(r)];
+    };
+    return { at_rank(std::floor(rank - margin)), at_rank(std::ceil(rank + margin)) };
+  }
+
+  // The key of the `count`-th present point in the order of removal: the
+  // keys between the likely bounds are counted and listed in parallel, and
+  // only those are ordered; all of them when the bounds missed.
+  template <typename ConcurrencyTag>
+  Key key_of_present(std::size_t count) const
+  {
+    const auto [low, high] = likely_bounds(count);
+    const std::size_t blocks = (m_points.size() + key_block - 1) / key_block;
+    std::vector<std::size_t> before(blocks, 0);
+    std::vector<std::vector<Key> > between(blocks);
+    for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
+      const Key k = key(i);
+      if (low && k < *low)
+        ++before[b];
+      else if (!(high && *high < k))
+        between[b].push_back(k);
+    });
+    std::size_t first = 0;
+    for (std::size_t b = 0; b < blocks; ++b)
+      first += before[b];
+    std::vector<Key> keys;
+    for (std::vector<Key>& block : between)
+    {
+      keys.insert(keys.end(), block.begin(), block.end());
+      std::vector<Key>().swap(block);
+    }
+    if (!(first < count && count <= first + keys.size()))
+    {
+      keys.clear();
+      for_each_present_block<Sequential_tag>([&](std::size_t, Index i) { keys.push_back(key(i)); });
+      first = 0;
+    }
+    std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - first - 1), keys.end());
+    return keys[count - first - 1];
+  }
+
   // The key of the `count`-th present point in the order of removal, and
   // the points up to it, in index order.
+  template <typename ConcurrencyTag>
   std::pair<std::vector<Index>, Key> first_present(std::size_t count) const
   {
-    Key last;
-    { // the keys go before the points are listed
-      std::vector<Key> keys;
-      keys.reserve(m_count);
-      for (Index i = 0; i < Index(m_points.size()); ++i)
-        if (is_present(i))
-          keys.push_back(key(i));
-      std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - 1), keys.end());
-      last = keys[count - 1];
-    }
+    const Key last = key_of_present<ConcurrencyTag>(count);
+    const std::size_t blocks = (m_points.size() + key_block - 1) / key_block;
+    std::vector<std::vector<Index> > listed(blocks);
+    for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
+      if (!(last < key(i)))
+        listed[b].push_back(i);
+    });
     std::vector<Index> first;
     first.reserve(count);
-    for (Index i = 0; i < Index(m_points.size()); ++i)
-      if (is_present(i) && !(last < key(i)))
-        first.push_back(i);
+    for (std::vector<Index>& block : listed)
+    {
+      first.insert(first.end(), block.begin(), block.end());
+      std::vector<Index>().swap(block);
+    }
     return { std::move(first), last };
   }
 
@@ -312,7 +384,7 @@ private:
     removals.reserve(m_count - stage.target);
     while (m_count > stage.target)
     {
-      auto [candidates, threshold] = first_present(m_count - stage.target);
+      auto [candidates, threshold] = first_present<ConcurrencyTag>(m_count - stage.target);
       while (!candidates.empty())
         remove_local_firsts<ConcurrencyTag>(candidates, threshold, stage, removals);
     }
@@ -336,6 +408,10 @@ private:
   std::vector<char> m_present;
   std::size_t m_count;
   static constexpr std::size_t gather_block = std::size_t(1) << 15;
+  // the blocks of indices whose keys are read in parallel, and the stride
+  // of the sample that bounds a threshold
+  static constexpr std::size_t key_block = std::size_t(1) << 14;
+  static constexpr std::size_t sample_stride = 16;
   // CSR offsets of each point's neighbours: 64-bit, as dense clouds can hold
   // more than 2^32 pairs within reach
   std::vector<std::size_t> m_first;

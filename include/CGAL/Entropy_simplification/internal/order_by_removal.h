@@ -7,6 +7,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
 
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <iterator>
 #include <utility>
@@ -33,7 +34,7 @@ std::vector<typename Range::iterator> iterators_of(Range& range)
 // left. `removed` holds input positions in removal order. Only moves
 // elements: the range stays a permutation of itself. Returns the position of
 // the first removed element.
-template <typename Iterator>
+template <typename ConcurrencyTag, typename Iterator>
 std::size_t order_by_removal(const std::vector<Iterator>& at, const std::vector<Index>& removed)
 {
   const std::size_t n = at.size();
@@ -50,24 +51,14 @@ std::size_t order_by_removal(const std::vector<Iterator>& at, const std::vector<
   const std::size_t kept = source.size();
   source.insert(source.end(), removed.rbegin(), removed.rend());
 
-  // Follow each cycle of the permutation once, moving through a single
-  // temporary.
-  std::vector<char> done(n, 0);
-  for (std::size_t start = 0; start < n; ++start)
-  {
-    if (done[start] || source[start] == start)
-      continue;
-    auto carried = std::move(*at[start]);
-    std::size_t j = start;
-    while (source[j] != start)
-    {
-      *at[j] = std::move(*at[source[j]]);
-      done[j] = 1;
-      j = source[j];
-    }
-    *at[j] = std::move(carried);
-    done[j] = 1;
-  }
+  // Moved out in their new order, then back: the reads are scattered, the
+  // writes are not, and the moves back are independent of each other.
+  std::vector<typename std::iterator_traits<Iterator>::value_type> moved;
+  moved.reserve(n);
+  for (Index s : source)
+    moved.push_back(std::move(*at[s]));
+  for_each_index<ConcurrencyTag>(
+    n, [&](std::size_t j) { *at[j] = std::move(moved[j]); }, [](std::size_t) { return true; });
   return kept;
 }
 

@@ -117,8 +117,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
   // order are done with, and their memory goes back before the run
   const Working_vector plane_normal =
     options.mode == Mode::paper ? reference_normal(options, points) : Working_vector(CGAL::NULL_VECTOR);
-  const Indexed_points indexed = sort_spatially<ConcurrencyTag>(points);
-  std::vector<Working_point>().swap(points);
+  const Indexed_points indexed = sort_spatially<ConcurrencyTag>(std::move(points));
   if (options.mode == Mode::paper)
   {
     Paper_simplification engine(indexed, k, options, plane_normal);
