@@ -238,6 +238,26 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
         }
 }
 
+TEST_CASE("Default mode: weights round as std::llround does, halves and their neighbours included",
+          "[default][reference]")
+{
+  std::vector<double> values = { 0., 0.25, 0.5, 1.5, 2.5, 1099511627775.5, 1099511627776., 4503599627370495.5 };
+  test_clouds::Random random(3);
+  for (int i = 0; i < 100000; ++i)
+  {
+    const double scale = std::ldexp(1., int(random.below(53)));
+    values.push_back(random.uniform() * scale);
+    values.push_back(std::floor(random.uniform() * scale) + 0.5); // a half, exact below 2^52
+  }
+  const std::size_t exact = values.size();
+  for (std::size_t i = 0; i < exact; ++i)
+    for (double toward : { 0., std::ldexp(1., 53) })
+      values.push_back(std::nextafter(values[i], toward));
+  for (double x : values)
+    if (x < std::ldexp(1., 53))
+      REQUIRE(ESI::rounded(x) == std::llround(x));
+}
+
 TEST_CASE("Default mode: exact count, a subset, nothing lost, deterministic", "[default][guarantees]")
 {
   test_parallel::require_tbb();

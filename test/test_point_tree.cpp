@@ -64,7 +64,7 @@ std::vector<ESI::Index> ids(const std::vector<ESI::Neighbor>& best)
 
 } // namespace
 
-TEST_CASE("Point tree: nearest neighbours in the package's order, before and after removals", "[point tree]")
+TEST_CASE("Point tree: nearest neighbours in the package's order, before and after removals, one or many", "[point tree]")
 {
   const ESI::Indexed_points p = test_points();
   // a tree over every third point, queried from every point
@@ -79,6 +79,10 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
       tree.nearest(q, count, best);
       REQUIRE(ids(best) == scan_nearest(p, members, q, count));
     }
+  // the search for one point alone finds the same, ties included: the
+  // lattice repeats positions
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
+    REQUIRE(tree.nearest_one(q) == scan_nearest(p, members, q, 1).front());
   // remove all but 30 members: the searches skip the removed points
   ESI::Portable_random random(5);
   std::vector<ESI::Index> present = members;
@@ -94,6 +98,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     REQUIRE(ids(best) == scan_nearest(p, present, q, 10));
     tree.nearest(q, 100, best); // more than are present
     REQUIRE(ids(best) == scan_nearest(p, present, q, 100));
+    REQUIRE(tree.nearest_one(q) == scan_nearest(p, present, q, 1).front());
   }
 }
 

@@ -94,14 +94,8 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
   for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
-      thread_local std::vector<Neighbor> nearest;
-      Index c = Index(i);
       // a coarse point is its own nearest, which the search leaves out
-      if (slot[i] == coarse.size())
-      {
-        tree.nearest(Index(i), 1, nearest);
-        c = nearest.front().id;
-      }
+      const Index c = slot[i] == coarse.size() ? tree.nearest_one(Index(i)) : Index(i);
       strength[i] = feature_strength(entropy[slot[c]], floor);
     },
     [](std::size_t) { return true; });

@@ -56,12 +56,8 @@ Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) {
-      thread_local std::vector<Neighbor> nearest;
       if (!present[i])
-      {
-        tree.nearest(Index(i), 1, nearest);
-        rank[i] = rank[nearest.front().id];
-      }
+        rank[i] = rank[tree.nearest_one(Index(i))];
     },
     [](std::size_t) { return true; });
   return cells;

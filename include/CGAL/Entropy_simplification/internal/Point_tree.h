@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -82,6 +83,16 @@ public:
     best.clear();
     if (!m_order.empty() && count > 0)
       search_nearest(0, q, count, best);
+  }
+
+  // The first point of the tree other than `q` in the neighbour order of
+  // `q`, as `nearest(q, 1, ...)` finds it, with no list to keep. The tree
+  // must hold a point other than `q`.
+  Index nearest_one(Index q) const
+  {
+    Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
+    search_nearest_one(0, q, best);
+    return best.id;
   }
 
   // Records the largest of `scales` in each node, for `within_reach`.
@@ -219,6 +230,32 @@ private:
       search_nearest(first, q, count, best);
     if (best.size() < count || squared_distance_to_box(center, m_nodes[second]) <= best.back().squared_distance)
       search_nearest(second, q, count, best);
+  }
+
+  void search_nearest_one(std::size_t n, Index q, Neighbor& best) const
+  {
+    const Node& node = m_nodes[n];
+    const Working_point& center = m_points.points[q];
+    if (node.child == 0)
+    {
+      for (Index r = node.first; r < node.beyond; ++r)
+      {
+        const Index i = m_order[r];
+        const double distance = squared_distance(center, m_points.points[i]);
+        if (distance > best.squared_distance || i == q || is_removed(i))
+          continue;
+        const Neighbor candidate{ distance, m_points.input_position[i], i };
+        if (candidate < best)
+          best = candidate;
+      }
+      return;
+    }
+    const Index upper_side = center.cartesian(node.cut) < node.cut_value ? 0 : 1;
+    const Index first = node.child + upper_side, second = node.child + 1 - upper_side;
+    if (squared_distance_to_box(center, m_nodes[first]) <= best.squared_distance)
+      search_nearest_one(first, q, best);
+    if (squared_distance_to_box(center, m_nodes[second]) <= best.squared_distance)
+      search_nearest_one(second, q, best);
   }
 
   // The reach is widened by 1e-9 so that rounding never loses a point at it.

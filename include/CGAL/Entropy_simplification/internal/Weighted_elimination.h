@@ -49,6 +49,14 @@ inline Elimination_stage next_stage(std::size_t present, std::size_t target, dou
   return stage;
 }
 
+// `x` in [0, 2^53) rounded half up, as std::llround rounds it, without its
+// call: the fraction x - floor(x) of such an x is exact.
+inline std::int64_t rounded(double x)
+{
+  const std::int64_t whole = std::int64_t(x);
+  return whole + (x - double(whole) >= 0.5 ? 1 : 0);
+}
+
 // The weight of a pair, in units of 2^-40 so that sums and differences of
 // weights are exact whatever their order: (1 - d / (2 r s))^8 within 2 r s,
 // s the mean of the two points' scales, d not below the limit times s.
@@ -62,7 +70,7 @@ inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, 
     return 0;
   const double w = 1. - (std::max)(d, stage.limit * s) / reach;
   const double w2 = w * w, w4 = w2 * w2;
-  return std::llround(w4 * w4 * 1099511627776.);
+  return rounded(w4 * w4 * 1099511627776.);
 }
 
 // The elimination on the present points. Each stage gathers, for each point,
@@ -265,7 +273,10 @@ private:
   template <typename ConcurrencyTag>
   Key key_of_present(std::size_t count) const
   {
-    const auto [low, high] = likely_bounds(count);
+    // named, not structured bindings, which a lambda cannot capture before C++20
+    const std::pair<std::optional<Key>, std::optional<Key> > bounds = likely_bounds(count);
+    const std::optional<Key>& low = bounds.first;
+    const std::optional<Key>& high = bounds.second;
     const std::size_t blocks = (m_points.size() + key_block - 1) / key_block;
     std::vector<std::size_t> before(blocks, 0);
     std::vector<std::vector<Key> > between(blocks);
