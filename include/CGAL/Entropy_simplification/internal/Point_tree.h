@@ -81,8 +81,9 @@ public:
   void nearest(Index q, std::size_t count, std::vector<Neighbor>& best) const
   {
     best.clear();
+    Best_list list{ count, best };
     if (!m_order.empty() && count > 0)
-      search_nearest(0, q, count, best);
+      search_nearest(0, q, list);
   }
 
   // The first point of the tree other than `q` in the neighbour order of
@@ -90,9 +91,9 @@ public:
   // must hold a point other than `q`.
   Index nearest_one(Index q) const
   {
-    Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
-    search_nearest_one(0, q, best);
-    return best.id;
+    Best_one one;
+    search_nearest(0, q, one);
+    return one.best.id;
   }
 
   // Records the largest of `scales` in each node, for `within_reach`.
@@ -205,34 +206,34 @@ private:
     return distance;
   }
 
-  // Visits the child on the side of `q` first, then the other unless its box
-  // is farther than the worst point kept.
-  void search_nearest(std::size_t n, Index q, std::size_t count, std::vector<Neighbor>& best) const
+  // The best points found so far: a list of at most `count` in the
+  // neighbour order, or a single one. A point farther than `bound()` cannot
+  // enter.
+  struct Best_list
   {
-    const Node& node = m_nodes[n];
-    const Working_point& center = m_points.points[q];
-    if (node.child == 0)
+    std::size_t count;
+    std::vector<Neighbor>& list;
+    double bound() const
     {
-      for (Index r = node.first; r < node.beyond; ++r)
-      {
-        const Index i = m_order[r];
-        const double distance = squared_distance(center, m_points.points[i]);
-        if (best.size() == count && distance > best.back().squared_distance)
-          continue;
-        if (i != q && !is_removed(i))
-          keep_if_better(Neighbor{ distance, m_points.input_position[i], i }, count, best);
-      }
-      return;
+      return list.size() < count ? std::numeric_limits<double>::infinity() : list.back().squared_distance;
     }
-    const Index upper_side = center.cartesian(node.cut) < node.cut_value ? 0 : 1;
-    const Index first = node.child + upper_side, second = node.child + 1 - upper_side;
-    if (best.size() < count || squared_distance_to_box(center, m_nodes[first]) <= best.back().squared_distance)
-      search_nearest(first, q, count, best);
-    if (best.size() < count || squared_distance_to_box(center, m_nodes[second]) <= best.back().squared_distance)
-      search_nearest(second, q, count, best);
-  }
+    void offer(const Neighbor& candidate) { keep_if_better(candidate, count, list); }
+  };
+  struct Best_one
+  {
+    Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
+    double bound() const { return best.squared_distance; }
+    void offer(const Neighbor& candidate)
+    {
+      if (candidate < best)
+        best = candidate;
+    }
+  };
 
-  void search_nearest_one(std::size_t n, Index q, Neighbor& best) const
+  // Visits the child on the side of `q` first, then the other unless its box
+  // is farther than the bound.
+  template <typename Best>
+  void search_nearest(std::size_t n, Index q, Best& best) const
   {
     const Node& node = m_nodes[n];
     const Working_point& center = m_points.points[q];
@@ -242,20 +243,17 @@ private:
       {
         const Index i = m_order[r];
         const double distance = squared_distance(center, m_points.points[i]);
-        if (distance > best.squared_distance || i == q || is_removed(i))
-          continue;
-        const Neighbor candidate{ distance, m_points.input_position[i], i };
-        if (candidate < best)
-          best = candidate;
+        if (distance <= best.bound() && i != q && !is_removed(i))
+          best.offer(Neighbor{ distance, m_points.input_position[i], i });
       }
       return;
     }
     const Index upper_side = center.cartesian(node.cut) < node.cut_value ? 0 : 1;
     const Index first = node.child + upper_side, second = node.child + 1 - upper_side;
-    if (squared_distance_to_box(center, m_nodes[first]) <= best.squared_distance)
-      search_nearest_one(first, q, best);
-    if (squared_distance_to_box(center, m_nodes[second]) <= best.squared_distance)
-      search_nearest_one(second, q, best);
+    if (squared_distance_to_box(center, m_nodes[first]) <= best.bound())
+      search_nearest(first, q, best);
+    if (squared_distance_to_box(center, m_nodes[second]) <= best.bound())
+      search_nearest(second, q, best);
   }
 
   // The reach is widened by 1e-9 so that rounding never loses a point at it.
