@@ -2,6 +2,7 @@
 // angles, and writes the result.
 
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+#include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
@@ -30,9 +31,17 @@ int main(int argc, char** argv)
   const unsigned int k = 10;
   auto first_to_remove = CGAL::entropy_simplify_point_set<Concurrency_tag>(
     points, k, CGAL::parameters::select_percentage(10.));
-  const std::size_t before = points.size();
+
+  // How far the input lies from the kept points, over its bounding-box
+  // diagonal: the range still holds every input point, the kept ones first.
+  const std::vector<Point> kept(points.begin(), first_to_remove);
+  const CGAL::Entropy_simplification::Quality_report quality =
+    CGAL::measure_simplification_quality<Concurrency_tag>(points, kept);
+  std::cout << points.size() << " points, " << kept.size() << " kept; mean distance " << quality.mean_distance
+            << ", max distance " << quality.max_distance << ", point-to-plane error " << quality.point_to_plane
+            << std::endl;
+
   points.erase(first_to_remove, points.end());
-  std::cout << before << " points, " << points.size() << " kept" << std::endl;
 
   if (!CGAL::IO::write_points("simplified.xyz", points, CGAL::parameters::stream_precision(17)))
     return EXIT_FAILURE;

@@ -6,6 +6,7 @@
 
 #include "input_file.h"
 #include "point_files.h"
+#include "quality_report.h"
 #include "require_tbb.h"
 #include "safe_output.h"
 #include "simplify_cloud.h"
@@ -215,6 +216,31 @@ TEST_CASE("The program's simplification: exact count, kept rows in order, sequen
     CHECK(sequential.back() < 144);
     CHECK(sequential == parallel);
   }
+}
+
+TEST_CASE("The program's report measures the kept rows as the library measures their points", "[program][report]")
+{
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  const std::vector<std::size_t> kept =
+    kept_rows<CGAL::Sequential_tag>(cloud, count_settings(37, CGAL::Entropy_simplification::Mode::weighted_elimination));
+  const es::Column* xyz[3] = { cloud.table.find("x"), cloud.table.find("y"), cloud.table.find("z") };
+  std::vector<es::Kernel::Point_3> input, kept_points;
+  for (std::size_t row = 0; row < cloud.size(); ++row)
+  {
+    const std::array<double, 3> p = es::coordinates(cloud, xyz, row);
+    input.emplace_back(p[0], p[1], p[2]);
+  }
+  for (std::size_t row : kept)
+    kept_points.push_back(input[row]);
+  const auto expected = CGAL::measure_simplification_quality<CGAL::Sequential_tag>(input, kept_points);
+  const auto report = es::quality_of<CGAL::Sequential_tag>(cloud, kept);
+  CHECK(report.kept_size == 37);
+  CHECK(report.input_size == 144);
+  CHECK(report.mean_distance == expected.mean_distance);
+  CHECK(report.max_distance == expected.max_distance);
+  CHECK(report.point_to_plane == expected.point_to_plane);
+  CHECK(report.mean_distance > 0.);
 }
 
 TEST_CASE("Georeferenced LAS: the same integer records with other offsets keep the same points",

@@ -43,6 +43,7 @@ struct Settings
   unsigned int k = 10;
   ES::Options options;
   bool write_normals = false;
+  bool report = false;
   bool quiet = false;
   std::optional<bool> binary; // --binary or --ascii; otherwise the input's PLY encoding
 };
@@ -59,6 +60,8 @@ inline const char* examples_text()
          "  entropy_simplify scan.xyz out.xyz --ratio 0.2    XYZ (and .pwn): x y z [nx ny nz]\n"
          "  entropy_simplify mesh.off out.off --count 5000   OFF in: the vertices; OFF out: plain OFF\n"
          "                                                   (Open3D reads no points-only OFF: use PLY)\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.05 --report\n"
+         "                                                   and how far the input lies from the result\n"
          "LAZ is not supported (no LAZ library in Debian 12): decompress it first, e.g.\n"
          "  laszip -i scan.laz -o scan.las   or   pdal translate scan.laz scan.las\n"
          "\n"
@@ -180,7 +183,10 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   CLI::Option* ascii_flag = app.add_flag("--ascii", ascii, "write PLY as text");
   CLI::Option* binary_flag = app.add_flag("--binary", binary, "write PLY as binary (little-endian)");
   ascii_flag->excludes(binary_flag);
-  app.add_flag("-q,--quiet", s.quiet, "print nothing but errors");
+  app.add_flag("--report", s.report, "print the quality of the result: the mean and greatest distance from "
+                                     "the input points to the kept ones, and the point-to-plane error, over "
+                                     "the input's bounding-box diagonal (printed even with --quiet)");
+  app.add_flag("-q,--quiet", s.quiet, "print nothing but errors (and the report, if asked for)");
   app.footer(examples_text());
   try
   {

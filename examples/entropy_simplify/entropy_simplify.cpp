@@ -11,6 +11,7 @@
 #include "input_file.h"
 #include "point_files.h"
 #include "progress.h"
+#include "quality_report.h"
 #include "safe_output.h"
 #include "simplify_cloud.h"
 
@@ -109,6 +110,9 @@ int run(int argc, char** argv)
     std::printf("entropy_simplify: kept %zu of %zu points (%.4g%%) in %.3g s, peak memory %.0f MiB; wrote %s\n",
                 kept.size(), cloud.size(), 100. * double(kept.size()) / double(cloud.size()), timer.time(),
                 peak_memory_mib(), s.output.c_str());
+  // measured once the output is safe, so that it never delays the file
+  if (s.report)
+    print_quality_report(quality_of<CGAL::Parallel_if_available_tag>(cloud, kept));
   return exit_done;
 }
 

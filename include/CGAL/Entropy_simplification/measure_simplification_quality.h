@@ -1,0 +1,245 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The quality of a simplification measured against its input: how far the
+// input points lie from the kept points, and from the surface these span.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_MEASURE_SIMPLIFICATION_QUALITY_H
+#define CGAL_ENTROPY_SIMPLIFICATION_MEASURE_SIMPLIFICATION_QUALITY_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Point_tree.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
+#include <CGAL/Entropy_simplification/internal/named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+
+/**
+   \ingroup PkgEntropySimplificationRef
+
+   The quality of a simplification, as `CGAL::measure_simplification_quality()`
+   measures it. The distances are divided by the diagonal of the input's
+   bounding box, as in `benchmark/README.md`, so that clouds of any size and
+   unit compare; when all the input points coincide (a diagonal of 0), they
+   are given undivided.
+*/
+struct Quality_report
+{
+  /// the mean, over the input points, of the distance to the nearest kept point
+  double mean_distance = 0.;
+  /// the greatest of these distances: the one-sided Hausdorff distance from
+  /// the input to the kept points
+  double max_distance = 0.;
+  /// the root mean square distance from each input point to the plane fitted
+  /// (by PCA) to the 10 kept points nearest its nearest kept point, that
+  /// point included (to all of them when fewer are kept); where these kept
+  /// points coincide, the distance to them. Not a number when fewer than 3
+  /// points are kept, as they span no plane.
+  double point_to_plane = 0.;
+  /// the diagonal of the input's bounding box, in the input's unit
+  double diagonal = 0.;
+  /// the number of input points
+  std::size_t input_size = 0;
+  /// the number of kept points
+  std::size_t kept_size = 0;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The kept points nearest a kept point, itself included, span its plane.
+constexpr unsigned int quality_plane_points = 10;
+
+inline double bounding_box_diagonal(const std::vector<Working_point>& points)
+{
+  double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const Working_point& p : points)
+    for (int d = 0; d < 3; ++d)
+    {
+      low[d] = (std::min)(low[d], p.cartesian(d));
+      high[d] = (std::max)(high[d], p.cartesian(d));
+    }
+  return std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
+                   (high[2] - low[2]) * (high[2] - low[2]));
+}
+
+// The input points, then the kept ones, in one set: a tree of the kept ones
+// then answers the queries of both, ties going to the first kept point.
+inline Indexed_points input_then_kept(const std::vector<Working_point>& input, const std::vector<Working_point>& kept)
+{
+  Indexed_points all;
+  all.points = input;
+  all.points.insert(all.points.end(), kept.begin(), kept.end());
+  all.input_position = all_indices(all.points.size());
+  return all;
+}
+
+struct Local_plane
+{
+  Working_vector normal; // unit, or null where the points coincide
+  Working_point centroid;
+};
+
+// The plane of each kept point (those of `all` from `first_kept` on), from
+// it and its nearest kept points.
+template <typename ConcurrencyTag>
+std::vector<Local_plane> kept_planes(const Indexed_points& all, std::size_t first_kept, const Point_tree& kept_tree)
+{
+  const std::size_t m = all.size() - first_kept;
+  const std::size_t others = (std::min)(std::size_t(quality_plane_points), m) - 1;
+  std::vector<Local_plane> planes(m);
+  for_each_index<ConcurrencyTag>(
+    m,
+    [&](std::size_t r) {
+      thread_local std::vector<Neighbor> near;
+      const Index c = Index(first_kept + r);
+      kept_tree.nearest(c, others, near);
+      auto point = [&](std::size_t j) -> const Working_point& { return all.points[j == 0 ? c : near[j - 1].id]; };
+      double x = 0., y = 0., z = 0.;
+      for (std::size_t j = 0; j <= others; ++j)
+      {
+        x += point(j).x();
+        y += point(j).y();
+        z += point(j).z();
+      }
+      const double count = double(others + 1);
+      planes[r] = Local_plane{ pca_normal(others + 1, point), Working_point(x / count, y / count, z / count) };
+    },
+    [](std::size_t) { return true; });
+  return planes;
+}
+
+inline double distance_to_plane(const Working_point& p, const Local_plane& plane)
+{
+  if (plane.normal == CGAL::NULL_VECTOR)
+    return std::sqrt(squared_distance(p, plane.centroid));
+  return std::abs((p - plane.centroid) * plane.normal);
+}
+
+} // namespace internal
+/// \endcond
+} // namespace Entropy_simplification
+
+/**
+   \ingroup PkgEntropySimplificationRef
+
+   Measures a simplification against its input: for each input point, the
+   distance to the nearest kept point and to the plane the kept points span
+   there (see `Entropy_simplification::Quality_report`). The kept points need
+   not be a subset of the input, so that the simplifications of other
+   methods, which may move points, measure alike. No peer library reports
+   this; it tells which ratio a cloud can take.
+
+   \tparam ConcurrencyTag enables sequential versus parallel searches:
+   `Sequential_tag`, `Parallel_tag` or `Parallel_if_available_tag`. The
+   report does not depend on it: ties between kept points at the same
+   distance go to the first in the range, and the sums run in input order.
+   \tparam InputRange, KeptRange models of `Range`, whose iterators' value
+   types are the key types of the respective point maps
+
+   \param input the input of the simplification
+   \param kept the points the simplification kept
+   \param input_np, kept_np sequences of \ref bgl_namedparameters "Named
+   Parameters" among the ones listed below, for `input` and `kept`
+   respectively
+
+   \cgalNamedParamsBegin
+     \cgalParamNBegin{point_map}
+       \cgalParamDescription{a property map associating points to the elements of the range}
+       \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+       \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`, or the point
+                         map of a `CGAL::Point_set_3`}
+     \cgalParamNEnd
+     \cgalParamNBegin{geom_traits}
+       \cgalParamDescription{an instance of a geometric traits class}
+       \cgalParamType{a model of `Kernel`}
+       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \return the report, its distances divided by the input's bounding-box
+   diagonal
+
+   \throw std::invalid_argument when either range is empty, or when a
+   coordinate is not finite or exceeds 1e150 in magnitude.
+*/
+template <typename ConcurrencyTag, typename InputRange, typename KeptRange,
+          typename InputNamedParameters = parameters::Default_named_parameters,
+          typename KeptNamedParameters = parameters::Default_named_parameters>
+Entropy_simplification::Quality_report
+measure_simplification_quality(const InputRange& input, const KeptRange& kept,
+                               const InputNamedParameters& input_np = parameters::default_values(),
+                               const KeptNamedParameters& kept_np = parameters::default_values())
+{
+  namespace ES = Entropy_simplification::internal;
+  static_assert(ES::Uses_only_named_parameters<InputNamedParameters, internal_np::point_t,
+                                               internal_np::geom_traits_t>::value &&
+                  ES::Uses_only_named_parameters<KeptNamedParameters, internal_np::point_t,
+                                                 internal_np::geom_traits_t>::value,
+                "measure_simplification_quality() reads only the named parameters point_map and geom_traits");
+
+  const std::vector<ES::Working_point> input_points = ES::working_points(input, input_np);
+  const std::vector<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
+  if (input_points.empty() || kept_points.empty())
+    throw std::invalid_argument(std::string("measure_simplification_quality: the ") +
+                                (input_points.empty() ? "input" : "simplification") + " is empty");
+  Entropy_simplification::Quality_report report;
+  report.input_size = input_points.size();
+  report.kept_size = kept_points.size();
+  report.diagonal = ES::bounding_box_diagonal(input_points);
+
+  const std::size_t n = report.input_size;
+  const ES::Indexed_points all = ES::input_then_kept(input_points, kept_points);
+  std::vector<ES::Index> kept_ids(report.kept_size);
+  for (std::size_t r = 0; r < kept_ids.size(); ++r)
+    kept_ids[r] = ES::Index(n + r);
+  const ES::Point_tree kept_tree(all, kept_ids.begin(), kept_ids.end(), ConcurrencyTag());
+  const bool has_planes = report.kept_size >= 3;
+  const std::vector<ES::Local_plane> planes =
+    has_planes ? ES::kept_planes<ConcurrencyTag>(all, n, kept_tree) : std::vector<ES::Local_plane>();
+
+  std::vector<double> distance(n), plane_distance(n, 0.);
+  ES::for_each_index<ConcurrencyTag>(
+    n,
+    [&](std::size_t i) {
+      const ES::Index nearest = kept_tree.nearest_one(ES::Index(i));
+      distance[i] = std::sqrt(ES::squared_distance(all.points[i], all.points[nearest]));
+      if (has_planes)
+        plane_distance[i] = ES::distance_to_plane(all.points[i], planes[nearest - n]);
+    },
+    [](std::size_t) { return true; });
+
+  double sum = 0., squares = 0.;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    sum += distance[i];
+    squares += plane_distance[i] * plane_distance[i];
+    report.max_distance = (std::max)(report.max_distance, distance[i]);
+  }
+  const double unit = report.diagonal > 0. ? report.diagonal : 1.;
+  report.mean_distance = sum / double(n) / unit;
+  report.max_distance /= unit;
+  report.point_to_plane =
+    has_planes ? std::sqrt(squares / double(n)) / unit : std::numeric_limits<double>::quiet_NaN();
+  return report;
+}
+
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_MEASURE_SIMPLIFICATION_QUALITY_H
