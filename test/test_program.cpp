@@ -9,6 +9,7 @@
 #include "quality_report.h"
 #include "require_tbb.h"
 #include "safe_output.h"
+#include "thread_limit.h"
 #include "simplify_cloud.h"
 
 #include <sys/stat.h>
@@ -216,6 +217,27 @@ TEST_CASE("The program's simplification: exact count, kept rows in order, sequen
     CHECK(sequential.back() < 144);
     CHECK(sequential == parallel);
   }
+}
+
+TEST_CASE("The thread limit of --threads holds while it lives, and the result does not change",
+          "[program][threads]")
+{
+  test_parallel::require_tbb();
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  const es::Settings s = count_settings(37, CGAL::Entropy_simplification::Mode::weighted_elimination);
+  const std::vector<std::size_t> unlimited = kept_rows<test_parallel::Parallel_tag>(cloud, s);
+#ifdef CGAL_LINKED_WITH_TBB
+  const std::size_t before = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  {
+    const es::Thread_limit limit(std::size_t(1));
+    CHECK(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) == 1);
+    CHECK(kept_rows<test_parallel::Parallel_tag>(cloud, s) == unlimited);
+  }
+  CHECK(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) == before);
+#endif
+  const es::Thread_limit none{ std::nullopt };
+  CHECK(kept_rows<test_parallel::Parallel_tag>(cloud, s) == unlimited);
 }
 
 TEST_CASE("The program's report measures the kept rows as the library measures their points", "[program][report]")

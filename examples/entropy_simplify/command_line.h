@@ -44,6 +44,7 @@ struct Settings
   ES::Options options;
   bool write_normals = false;
   bool report = false;
+  std::optional<std::size_t> threads; // --threads; all the hardware threads otherwise
   bool quiet = false;
   std::optional<bool> binary; // --binary or --ascii; otherwise the input's PLY encoding
 };
@@ -62,6 +63,8 @@ inline const char* examples_text()
          "                                                   (Open3D reads no points-only OFF: use PLY)\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.05 --report\n"
          "                                                   and how far the input lies from the result\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1 --threads 4\n"
+         "                                                   on at most 4 threads, the same result\n"
          "LAZ is not supported (no LAZ library in Debian 12): decompress it first, e.g.\n"
          "  laszip -i scan.laz -o scan.las   or   pdal translate scan.laz scan.las\n"
          "\n"
@@ -159,7 +162,7 @@ inline void check(Settings& s, const std::string& ratio, const std::string& coun
 inline std::optional<Settings> parse_command_line(int argc, const char* const* argv)
 {
   Settings s;
-  std::string ratio, count, k = "10", feature_weight, order, mode = "default", normals = "pca";
+  std::string ratio, count, k = "10", feature_weight, order, mode = "default", normals = "pca", threads;
   bool ascii = false, binary = false;
   CLI::App app("Simplifies the point set INPUT to exactly N points, or to the fraction R of its points "
                "(rounded up), keeping more points where the normals vary, and writes the kept points, "
@@ -183,6 +186,8 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   CLI::Option* ascii_flag = app.add_flag("--ascii", ascii, "write PLY as text");
   CLI::Option* binary_flag = app.add_flag("--binary", binary, "write PLY as binary (little-endian)");
   ascii_flag->excludes(binary_flag);
+  app.add_option("--threads", threads, "use at most N worker threads (default: every hardware thread); the "
+                                     "result does not depend on N")->type_name("N");
   app.add_flag("--report", s.report, "print the quality of the result: the mean and greatest distance from "
                                      "the input points to the kept ones, and the point-to-plane error, over "
                                      "the input's bounding-box diagonal (printed even with --quiet)");
@@ -207,6 +212,13 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   s.options.normal_estimation = choice<ES::Normal_estimation>(
     "--normals", normals, { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
   command_line_detail::check(s, ratio, count, k, feature_weight, order);
+  if (!threads.empty())
+  {
+    const unsigned long long n = command_line_detail::whole_number("--threads", threads);
+    if (n == 0)
+      throw Usage_error("--threads must be at least 1");
+    s.threads = std::size_t((std::min)(n, (unsigned long long)(std::numeric_limits<int>::max)()));
+  }
   if (ascii || binary)
     s.binary = binary;
   return s;

@@ -14,6 +14,7 @@
 #include "quality_report.h"
 #include "safe_output.h"
 #include "simplify_cloud.h"
+#include "thread_limit.h"
 
 #include <CGAL/Real_timer.h>
 
@@ -78,6 +79,7 @@ int run(int argc, char** argv)
   if (!settings)
     return exit_done;
   const Settings& s = *settings;
+  const Thread_limit thread_limit(s.threads);
   const Format in = format_of(s.input), out = format_of(s.output);
   check_formats(s, in, out);
 
