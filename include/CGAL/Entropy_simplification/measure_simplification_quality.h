@@ -81,6 +81,9 @@ inline double bounding_box_diagonal(const std::vector<Working_point>& points)
 // then answers the queries of both, ties going to the first kept point.
 inline Indexed_points input_then_kept(const std::vector<Working_point>& input, const std::vector<Working_point>& kept)
 {
+  if (input.size() + kept.size() >= std::size_t((std::numeric_limits<Index>::max)()))
+    throw std::invalid_argument("measure_simplification_quality: the input and the kept points together must "
+                                "number fewer than 2^32 - 1");
   Indexed_points all;
   all.points = input;
   all.points.insert(all.points.end(), kept.begin(), kept.end());
@@ -123,6 +126,8 @@ std::vector<Local_plane> kept_planes(const Indexed_points& all, std::size_t firs
   return planes;
 }
 
+// Coincident kept points span no plane, only their common point: the
+// distance to it stands for the plane's.
 inline double distance_to_plane(const Working_point& p, const Local_plane& plane)
 {
   if (plane.normal == CGAL::NULL_VECTOR)
@@ -174,8 +179,9 @@ inline double distance_to_plane(const Working_point& p, const Local_plane& plane
    \return the report, its distances divided by the input's bounding-box
    diagonal
 
-   \throw std::invalid_argument when either range is empty, or when a
-   coordinate is not finite or exceeds 1e150 in magnitude.
+   \throw std::invalid_argument when either range is empty, when the two
+   together hold 2^32 - 1 points or more, or when a coordinate is not finite
+   or exceeds 1e150 in magnitude.
 */
 template <typename ConcurrencyTag, typename InputRange, typename KeptRange,
           typename InputNamedParameters = parameters::Default_named_parameters,
