@@ -112,15 +112,7 @@ std::vector<Local_plane> kept_planes(const Indexed_points& all, std::size_t firs
       const Index c = Index(first_kept + r);
       kept_tree.nearest(c, others, near);
       auto point = [&](std::size_t j) -> const Working_point& { return all.points[j == 0 ? c : near[j - 1].id]; };
-      double x = 0., y = 0., z = 0.;
-      for (std::size_t j = 0; j <= others; ++j)
-      {
-        x += point(j).x();
-        y += point(j).y();
-        z += point(j).z();
-      }
-      const double count = double(others + 1);
-      planes[r] = Local_plane{ pca_normal(others + 1, point), Working_point(x / count, y / count, z / count) };
+      planes[r] = Local_plane{ pca_normal(others + 1, point), centroid_of(others + 1, point) };
     },
     [](std::size_t) { return true; });
   return planes;

@@ -9,6 +9,7 @@
 
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
+#include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <algorithm>
@@ -102,15 +103,9 @@ Cell_members members_by_cell(const Indexed_points& points, const Voronoi_cells& 
 // the internal order.
 inline Index member_nearest_centroid(const Indexed_points& points, const Index* first, const Index* beyond)
 {
-  double x = 0., y = 0., z = 0.;
-  for (const Index* i = first; i != beyond; ++i)
-  {
-    x += points.points[*i].x();
-    y += points.points[*i].y();
-    z += points.points[*i].z();
-  }
-  const double count = double(beyond - first);
-  const Working_point centroid(x / count, y / count, z / count);
+  const Working_point centroid = centroid_of(std::size_t(beyond - first), [&](std::size_t j) -> const Working_point& {
+    return points.points[first[j]];
+  });
   Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
   for (const Index* i = first; i != beyond; ++i)
   {

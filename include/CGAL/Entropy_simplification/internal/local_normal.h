@@ -24,6 +24,20 @@ namespace internal {
 
 using Working_vector = Working_kernel::Vector_3;
 
+// The centroid of the `m` points `point(0)`, ..., `point(m-1)`, summed in
+// that order.
+template <typename PointAt>
+Working_point centroid_of(std::size_t m, PointAt point)
+{
+  double x = 0., y = 0., z = 0.;
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Working_point& p = point(i);
+    x += p.x(); y += p.y(); z += p.z();
+  }
+  return Working_point(x / double(m), y / double(m), z / double(m));
+}
+
 // The unit normal of the plane fitted by least squares to the `m` points
 // `point(0)`, ..., `point(m-1)`: the eigenvector of the smallest eigenvalue of
 // their covariance matrix, as `CGAL::pca_estimate_normals()` computes it.
@@ -34,13 +48,8 @@ using Working_vector = Working_kernel::Vector_3;
 template <typename PointAt>
 Working_vector pca_normal(std::size_t m, PointAt point)
 {
-  double cx = 0., cy = 0., cz = 0.;
-  for (std::size_t i = 0; i < m; ++i)
-  {
-    const Working_point& p = point(i);
-    cx += p.x(); cy += p.y(); cz += p.z();
-  }
-  cx /= double(m); cy /= double(m); cz /= double(m);
+  const Working_point c = centroid_of(m, point);
+  const double cx = c.x(), cy = c.y(), cz = c.z();
 
   double xx = 0., xy = 0., xz = 0., yy = 0., yz = 0., zz = 0.;
   for (std::size_t i = 0; i < m; ++i)
