@@ -415,11 +415,14 @@ inline std::size_t most_crowded(const std::vector<std::int64_t>& weights, const 
   return best;
 }
 
-// The input positions of the removed points, first removed first.
-inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, const Field& field, std::size_t target)
+// The input positions of the removed points, first removed first, from
+// the `present` points (all of them when empty).
+inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, const Field& field, std::size_t target,
+                                          std::vector<bool> present = {})
 {
-  std::vector<bool> present(points.size(), true);
-  std::size_t count = points.size();
+  if (present.empty())
+    present.assign(points.size(), true);
+  std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
   std::vector<std::size_t> removed;
   while (count > target)
   {
@@ -511,6 +514,26 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   for (std::size_t j = 0; j < gone.size(); ++j)
     *std::find(removed.begin(), removed.end(), come[j]) = gone[j];
   return removed;
+}
+
+// The ranks of the default mode with the level `level` exact: the points
+// kept by the default mode down to `level` go on being eliminated among
+// themselves, from the relocated ones, down to one point; rank 0 is the last
+// point present, and the points removed after it come before those removed
+// earlier.
+inline std::vector<std::size_t> ranks(const std::vector<Point>& points, const Field& field, std::size_t level)
+{
+  const std::size_t n = points.size();
+  std::vector<std::size_t> removed = removal_order(points, field, level);
+  std::vector<bool> kept(n, true);
+  for (std::size_t p : removed)
+    kept[p] = false;
+  for (std::size_t p : eliminate(points, field, 1, kept))
+    removed.push_back(p);
+  std::vector<std::size_t> rank(n, 0); // the one point never removed keeps 0
+  for (std::size_t j = 0; j < removed.size(); ++j)
+    rank[removed[j]] = n - 1 - j;
+  return rank;
 }
 
 } // namespace reference

@@ -271,9 +271,11 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   // the kept points' normals wait for the run to end, so that the iterators
   // to the range are not held at its peak of memory
   std::vector<std::pair<ES::Index, ES::Working_vector> > normals;
-  const std::vector<ES::Index> removed = ES::simplify_points<ConcurrencyTag>(
-    std::move(distinct), k, target, options, callback, has_normal_map,
-    [&](ES::Index position, const ES::Working_vector& n) { normals.emplace_back(position, n); });
+  const std::vector<ES::Index> removed =
+    ES::simplify_points<ConcurrencyTag>(
+      std::move(distinct), k, target, ES::Run_extent::to_target, options, callback, has_normal_map,
+      [&](ES::Index position, const ES::Working_vector& n) { normals.emplace_back(position, n); })
+      .value_or(std::vector<ES::Index>());
 
   const auto at = ES::iterators_of(points);
   if constexpr (has_normal_map)

@@ -150,37 +150,87 @@ void set_scales(const Indexed_points& points, const std::vector<double>& area, c
     field.effective_area += a;
 }
 
-// The field from `knn`, the k nearest neighbours of each point nearest first
-// (those of point i at knn[i * k]), which it frees once used: normals
-// estimated on each point and its neighbours; the feature strength the
-// greater of that of the entropy of the normals of the same neighbourhood
-// and that of the coarse scale.
+// The k nearest neighbours of every point, nearest first (those of point i
+// at knn[i * k]).
 template <typename ConcurrencyTag, typename Progress>
-bool compute_elimination_field(const Indexed_points& points, const std::vector<Index>& coarse, unsigned int k,
-                               const Options& options, std::vector<Index> knn, Elimination_field& field,
-                               const Progress& progress)
+bool nearest_neighbors_of_all(const Indexed_points& points, unsigned int k, std::vector<Index>& knn,
+                              const Progress& progress)
+{
+  const std::vector<Index> all = all_indices(points.size());
+  const Point_tree tree(points, all.begin(), all.end(), ConcurrencyTag());
+  return nearest_neighbor_table<ConcurrencyTag>(tree, all, k, knn, [&](std::size_t done) {
+    return progress(double(done) / double(points.size()));
+  });
+}
+
+// The entropy of the normals of every point's neighbourhood, from `knn`;
+// the normals are estimated on the way and not kept.
+template <typename ConcurrencyTag, typename Progress>
+bool normal_entropy_of_all(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
+                           const std::vector<Index>& knn, std::vector<double>& entropy, const Progress& progress)
 {
   const std::size_t n = points.size();
-  const auto neighbors = [&](Index i) { return &knn[std::size_t(i) * k]; };
-  std::vector<double> entropy(n);
-  {
-    std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
-    if (!estimate_normal_entropy<ConcurrencyTag>(points, all_indices(n), k, options.normal_estimation, neighbors,
-                                                 [](Index i) { return i; }, normals, entropy, progress))
-      return false;
-  }
-  const std::vector<double> area = sampled_areas<ConcurrencyTag>(points, k, neighbors);
-  std::vector<Index>().swap(knn);
+  std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
+  entropy.assign(n, 0.);
+  return estimate_normal_entropy<ConcurrencyTag>(
+    points, all_indices(n), k, estimation, [&](Index i) { return &knn[std::size_t(i) * k]; },
+    [](Index i) { return i; }, normals, entropy, progress);
+}
 
-  std::vector<double> strength =
-    coarse_feature_strength<ConcurrencyTag>(points, coarse, k, options.normal_estimation);
+// The feature strength of every point, from the entropy of the normals of
+// its neighbourhood: the greater of that of `entropy`, at the scale of k,
+// and that of the coarse scale, made of every `coarse_stride`-th point.
+template <typename ConcurrencyTag>
+std::vector<double> feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
+                                      const std::vector<double>& entropy)
+{
+  std::vector<Index> coarse;
+  for (std::size_t i = 0; i < points.size(); i += coarse_stride)
+    coarse.push_back(Index(i));
+  std::vector<double> strength = coarse_feature_strength<ConcurrencyTag>(points, coarse, k, estimation);
   const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
-    n, [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
+    points.size(),
+    [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
     [](std::size_t) { return true; });
+  return strength;
+}
 
+// The field from `knn`, the k nearest neighbours of each point nearest first
+// (those of point i at knn[i * k]), which it frees once used: the feature
+// strengths and the areas the points sample make the scales.
+template <typename ConcurrencyTag, typename Progress>
+bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
+                               std::vector<Index> knn, Elimination_field& field, const Progress& progress)
+{
+  std::vector<double> entropy;
+  if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy, progress))
+    return false;
+  const std::vector<double> area =
+    sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
+  std::vector<Index>().swap(knn);
+  const std::vector<double> strength =
+    feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
+  std::vector<double>().swap(entropy);
   set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, field);
   return true;
+}
+
+// The feature strength of every point, which is the default mode's
+// importance, computed as the field computes it; empty when `progress`
+// asked to stop.
+template <typename ConcurrencyTag, typename Progress>
+std::vector<double> feature_strength_of_all(const Indexed_points& points, unsigned int k, const Options& options,
+                                            const Progress& progress)
+{
+  std::vector<Index> knn;
+  std::vector<double> entropy;
+  if (!nearest_neighbors_of_all<ConcurrencyTag>(points, k, knn, [&](double f) { return progress(0.5 * f); }) ||
+      !normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
+                                             [&](double f) { return progress(0.5 + 0.5 * f); }))
+    return {};
+  std::vector<Index>().swap(knn);
+  return feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
 }
 
 // The normal of each point of `subset`, estimated on it and its k nearest

@@ -84,33 +84,23 @@ public:
     : m_points(points), m_k(k), m_options(options), m_present(points.size(), 1), m_count(points.size())
   {}
 
-  // Computes the field from the k nearest neighbours of every point, and
-  // from those of every `coarse_stride`-th point among these points.
+  // Computes the field from the k nearest neighbours of every point.
   // `progress` receives the fraction done, on the calling thread; returns
   // false when it asked to stop.
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    const std::size_t n = m_points.size();
     std::vector<Index> knn;
-    { // the tree goes before the field is computed
-      const std::vector<Index> all = all_indices(n);
-      const Point_tree tree(m_points, all.begin(), all.end(), ConcurrencyTag());
-      if (!nearest_neighbor_table<ConcurrencyTag>(tree, all, m_k, knn, [&](std::size_t done) {
-            return progress(0.5 * double(done) / double(n));
-          }))
-        return false;
-    }
-    std::vector<Index> coarse;
-    for (std::size_t i = 0; i < n; i += coarse_stride)
-      coarse.push_back(Index(i));
-    if (!compute_elimination_field<ConcurrencyTag>(m_points, coarse, m_k, m_options, std::move(knn), m_field,
-                                                   [&](double f) { return progress(0.5 + 0.5 * f); }))
-      return false;
-    return true;
+    return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn,
+                                                    [&](double f) { return progress(0.5 * f); }) &&
+           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, std::move(knn), m_field,
+                                                     [&](double f) { return progress(0.5 + 0.5 * f); });
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }
+  // Makes the points of `present` the present ones, as many as before (the
+  // relocation exchanges points).
+  void set_present(std::vector<char> present) { m_present = std::move(present); }
   // The normals of the points `subset`, as the field estimated them.
   template <typename ConcurrencyTag>
   std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const

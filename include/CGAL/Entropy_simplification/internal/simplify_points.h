@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Runs either mode on the distinct points of a range and returns its removal
-// order, the copies of coincident points first.
+// order, the copies of coincident points first: down to a target, or on
+// through the kept points, so that every point has a rank.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
@@ -27,6 +28,14 @@ namespace internal {
 
 // Iterations of the relocation that ends the default mode.
 constexpr int relocation_iterations = 2;
+
+// How far a run goes: down to its target, or on through the kept points
+// until the last ones, so that the kept points are ordered too.
+enum class Run_extent
+{
+  to_target,
+  through_the_kept
+};
 
 // What an engine did: its removals, as indices of the Indexed_points, in
 // removal order, unless the callback stopped it during its initialisation.
@@ -80,6 +89,21 @@ void relocate(const Indexed_points& points, Engine_run& run)
     run.removed[rank[swap.second]] = swap.first;
 }
 
+// Orders the points a default-mode run kept, once relocated: the
+// elimination goes on among them, with the stages it would have, down to
+// one point, which no removal follows. The callback, still at 1, can stop it.
+template <typename ConcurrencyTag>
+bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
+                        const std::function<bool(double)>& callback)
+{
+  engine.set_present(present_after(run, points.size()));
+  std::size_t count = 0;
+  return engine.template remove_down_to<ConcurrencyTag>(1, [&](Index p) {
+    run.removed.push_back(p);
+    return ++count % 1024 != 0 || !callback || callback(1.);
+  });
+}
+
 // Writes the normal of each present point when `with_normals`, and returns
 // the removals as positions in the points given to `sort_spatially`.
 template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
@@ -105,11 +129,15 @@ std::vector<Index> finish(const Engine& engine, const Indexed_points& points, co
 }
 
 // The method of `options.mode` on points without copies, given in input
-// order, down to `target`: the positions of the removed points in removal
-// order, or nothing when the callback stopped the initialisation.
+// order, down to `target` or through the kept points: the positions of the
+// removed points in removal order, or nothing when the callback stopped the
+// initialisation, or any part of a run through the kept points. The paper's
+// removals are exactly progressive, so its run through the kept points is
+// one run down to its last k + 1 points.
 template <typename ConcurrencyTag, typename NormalWriter>
 std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_point>&& points, unsigned int k,
-                                                            std::size_t target, const Options& options,
+                                                            std::size_t target, Run_extent extent,
+                                                            const Options& options,
                                                             const std::function<bool(double)>& callback,
                                                             bool with_normals, const NormalWriter& write_normal)
 {
@@ -118,11 +146,13 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
   const Working_vector plane_normal =
     options.mode == Mode::paper ? reference_normal(options, points) : Working_vector(CGAL::NULL_VECTOR);
   const Indexed_points indexed = sort_spatially<ConcurrencyTag>(std::move(points));
+  const bool through = extent == Run_extent::through_the_kept;
   if (options.mode == Mode::paper)
   {
     Paper_simplification engine(indexed, k, options, plane_normal);
-    const Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
-    if (!run.initialized)
+    const Engine_run run =
+      run_engine<ConcurrencyTag>(engine, indexed.size(), through ? std::size_t(k) + 1 : target, callback);
+    if (!run.initialized || (through && !run.completed))
       return std::nullopt;
     return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
   }
@@ -130,30 +160,36 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
-  if (run.completed)
+  if (run.completed && !run.removed.empty())
     relocate<ConcurrencyTag>(indexed, run);
+  if (through && !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, callback)))
+    return std::nullopt;
   return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
 }
 
-// The method of `options.mode` on a range down to `target` points: the
-// input positions of the removed points in removal order. The copies of
-// coincident points go first, the last in input order first, so that they
-// come back in input order once every distinct point is kept; a kept copy
-// gets the normal of its representative. The distinct points' coordinates
-// are released once sorted, their input positions during the run. `write_normal(position, normal)`
-// receives the normal of each kept point when `with_normals`. Nothing is
-// removed when the callback stops the initialisation.
+// The method of `options.mode` on a range down to `target` points, or on
+// through the kept points (see simplify_distinct_points): the input
+// positions of the removed points in removal order, or nothing when the
+// callback stopped the run before it removed anything, or before its end
+// through the kept points. The copies of coincident points go first, the
+// last in input order first, so that they come back in input order once
+// every distinct point is kept; a kept copy gets the normal of its
+// representative. The distinct points' coordinates are released once
+// sorted, their input positions during the run. `write_normal(position,
+// normal)` receives the normal of each kept point when `with_normals`.
 template <typename ConcurrencyTag, typename NormalWriter>
-std::vector<Index> simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
-                                   const Options& options, const std::function<bool(double)>& callback,
-                                   bool with_normals, const NormalWriter& write_normal)
+std::optional<std::vector<Index> > simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
+                                                   Run_extent extent, const Options& options,
+                                                   const std::function<bool(double)>& callback,
+                                                   bool with_normals, const NormalWriter& write_normal)
 {
   const std::size_t distinct_count = distinct.size();
-  const std::size_t kept_copies = target > distinct_count ? target - distinct_count : 0;
+  const bool through = extent == Run_extent::through_the_kept;
+  const std::size_t kept_copies = !through && target > distinct_count ? target - distinct_count : 0;
   std::vector<Index> removed;
   for (std::size_t c = distinct.copies.size(); c-- > kept_copies;)
     removed.push_back(distinct.copies[c]);
-  if (target >= distinct_count && !with_normals)
+  if (target >= distinct_count && !with_normals && !through)
     return removed;
 
   // The representatives' input positions are those of no copy: released
@@ -161,10 +197,10 @@ std::vector<Index> simplify_points(Distinct_points&& distinct, unsigned int k, s
   std::vector<Index>().swap(distinct.input_position);
   std::vector<std::pair<Index, Working_vector> > normal_of_slot;
   const std::optional<std::vector<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
-    std::move(distinct.points), k, (std::min)(target, distinct_count), options, callback, with_normals,
+    std::move(distinct.points), k, (std::min)(target, distinct_count), extent, options, callback, with_normals,
     [&](Index slot, const Working_vector& normal) { normal_of_slot.emplace_back(slot, normal); });
   if (!removed_distinct)
-    return {};
+    return std::nullopt;
   const std::vector<Index> input_position = positions_of_no_copy(distinct.copies, distinct_count);
   for (Index slot : *removed_distinct)
     removed.push_back(input_position[slot]);
