@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include "indices_file.h"
 #include "input_file.h"
+#include "las_extra_bytes.h"
 #include "point_files.h"
 #include "quality_report.h"
 #include "require_tbb.h"
@@ -61,12 +63,18 @@ es::Settings count_settings(std::size_t count, CGAL::Entropy_simplification::Mod
   return s;
 }
 
-// The rows the program keeps, without progress or normals.
+// What the program selects, without progress or normals.
 template <typename ConcurrencyTag>
-std::vector<std::size_t> kept_rows(const es::Cloud& cloud, const es::Settings& s)
+es::Selection selection_of(const es::Cloud& cloud, const es::Settings& s)
 {
   std::vector<std::array<double, 3> > normals;
   return es::simplify_cloud<ConcurrencyTag>(cloud, s, std::function<bool(double)>(), normals);
+}
+
+template <typename ConcurrencyTag>
+std::vector<std::size_t> kept_rows(const es::Cloud& cloud, const es::Settings& s)
+{
+  return selection_of<ConcurrencyTag>(cloud, s).kept;
 }
 
 } // namespace
@@ -217,6 +225,98 @@ TEST_CASE("The program's simplification: exact count, kept rows in order, sequen
     CHECK(sequential.back() < 144);
     CHECK(sequential == parallel);
   }
+}
+
+TEST_CASE("Ranked runs (--lod, --indices): the level's rows are the plain run's, the first by rank",
+          "[program][simplify][lod]")
+{
+  test_parallel::require_tbb();
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  for (auto mode : { CGAL::Entropy_simplification::Mode::weighted_elimination,
+                     CGAL::Entropy_simplification::Mode::paper })
+  {
+    const es::Settings plain = count_settings(37, mode);
+    es::Settings lod = plain, indices = plain;
+    lod.lod = true;
+    indices.indices = "kept.txt";
+    const std::vector<std::size_t> expected = kept_rows<CGAL::Sequential_tag>(cloud, plain);
+    const es::Selection all = selection_of<CGAL::Sequential_tag>(cloud, lod);
+    const es::Selection parallel =
+      test_parallel::on_two_threads_or_more([&] { return selection_of<test_parallel::Parallel_tag>(cloud, lod); });
+    const es::Selection kept = selection_of<CGAL::Sequential_tag>(cloud, indices);
+    CHECK(all.kept == expected);
+    CHECK(kept.kept == expected);
+    std::vector<std::size_t> sorted = all.by_rank;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(sorted == es::all_rows<std::size_t>(cloud.size()));
+    std::vector<std::size_t> first(all.by_rank.begin(), all.by_rank.begin() + 37);
+    std::sort(first.begin(), first.end());
+    CHECK(first == expected);
+    CHECK(kept.by_rank == std::vector<std::size_t>(all.by_rank.begin(), all.by_rank.begin() + 37));
+    CHECK(parallel.by_rank == all.by_rank);
+  }
+  // --lod alone: the level is the points the mode never removes
+  es::Settings alone;
+  alone.lod = true;
+  CHECK(selection_of<CGAL::Sequential_tag>(cloud, alone).kept.size() == 1);
+  alone.options.mode = CGAL::Entropy_simplification::Mode::paper;
+  CHECK(selection_of<CGAL::Sequential_tag>(cloud, alone).kept.size() == 11);
+}
+
+TEST_CASE("--indices writes one 0-based index a line, in the order given", "[program][lod]")
+{
+  es::String_sink sink;
+  es::write_indices(sink, { 7, 0, 123456789012, 3 });
+  CHECK(sink.bytes == "7\n0\n123456789012\n3\n");
+  es::String_sink empty;
+  es::write_indices(empty, {});
+  CHECK(empty.bytes.empty());
+}
+
+TEST_CASE("--importance in LAS: the records' bytes, then the attribute, declared in the Extra Bytes VLR",
+          "[program][las][importance]")
+{
+  for (const std::string name : { "grid.las", "grid_1_4_format_10.las", "grid_undocumented_extra_bytes.las",
+                                  "grid_declared_extra_bytes.las" })
+  {
+    INFO(name);
+    es::Input_file file(cli_input(name));
+    const es::Las_file las = es::read_las(file.bytes());
+    const std::vector<std::size_t> rows = { 5, 0, 143, 77 };
+    std::vector<double> value_of_row(las.point_count);
+    for (std::size_t r = 0; r < value_of_row.size(); ++r)
+      value_of_row[r] = 0.25 * double(r);
+    es::String_sink sink;
+    es::write_las_with_attribute(sink, las, rows, "importance", "a test", value_of_row);
+    const std::string written = sink.bytes;
+    const es::Las_file again = es::read_las(written);
+    REQUIRE(again.point_count == rows.size());
+    CHECK(again.record_length == las.record_length + 8);
+    CHECK(again.version_minor == las.version_minor);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+    {
+      CHECK(std::string(again.record(r), las.record_length) == std::string(las.record(rows[r]), las.record_length));
+      CHECK(es::load_little_endian<double>(again.record(r) + las.record_length) == value_of_row[rows[r]]);
+    }
+    // the last descriptor is the attribute's, after descriptors of the records' own extra bytes
+    const std::optional<std::size_t> vlr = es::las_extra_bytes_detail::extra_bytes_vlr(again);
+    REQUIRE(vlr);
+    const std::size_t length = es::load_little_endian<std::uint16_t>(written.data() + *vlr + 20);
+    REQUIRE(length % 192 == 0);
+    std::size_t declared = 0;
+    for (std::size_t d = 0; d + 192 < length; d += 192)
+      declared += es::las_extra_bytes_detail::declared_size(written.data() + *vlr + 54 + d);
+    CHECK(declared == las.record_length - es::las_detail::base_record_sizes[las.point_format]);
+    const char* attribute = written.data() + *vlr + 54 + length - 192;
+    CHECK(int(attribute[2]) == 10);
+    CHECK(std::string(attribute + 4) == "importance");
+    // what follows the points (EVLRs) is the input's
+    CHECK(written.substr(again.offset_to_points + rows.size() * again.record_length) ==
+          std::string(file.bytes().substr(las.offset_to_points + las.point_count * las.record_length)));
+  }
+  es::Input_file bad(cli_input("grid_overdeclared_extra_bytes.las"));
+  CHECK_THROWS_AS(es::check_room_for_attribute(es::read_las(bad.bytes())), es::Read_error);
 }
 
 TEST_CASE("The thread limit of --threads holds while it lives, and the result does not change",

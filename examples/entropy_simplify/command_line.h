@@ -43,6 +43,9 @@ struct Settings
   unsigned int k = 10;
   ES::Options options;
   bool write_normals = false;
+  bool lod = false;        // --lod: every point, by rank
+  bool importance = false; // --importance: a scalar property
+  std::string indices;     // --indices FILE: the input indices written, by rank
   bool report = false;
   std::optional<std::size_t> threads; // --threads; all the hardware threads otherwise
   bool quiet = false;
@@ -61,6 +64,18 @@ inline const char* examples_text()
          "  entropy_simplify scan.xyz out.xyz --ratio 0.2    XYZ (and .pwn): x y z [nx ny nz]\n"
          "  entropy_simplify mesh.off out.off --count 5000   OFF in: the vertices; OFF out: plain OFF\n"
          "                                                   (Open3D reads no points-only OFF: use PLY)\n"
+         "  entropy_simplify scan.ply lod.ply --lod --ratio 0.01\n"
+         "                                                   every point, by rank, with its rank: any\n"
+         "                                                   first m points are a simplification, the\n"
+         "                                                   first 1% exactly the --ratio 0.01 result\n"
+         "  entropy_simplify scan.las lod.las --lod          LAS: the records by rank, the order alone\n"
+         "                                                   carries it\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1 --importance\n"
+         "                                                   and each point's importance as a scalar\n"
+         "                                                   property (in LAS, an extra-bytes attribute)\n"
+         "  entropy_simplify scan.xyz out.xyz --ratio 0.1 --indices kept.txt\n"
+         "                                                   and the kept points' 0-based input indices,\n"
+         "                                                   one per line, by rank\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.05 --report\n"
          "                                                   and how far the input lies from the result\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.1 --threads 4\n"
@@ -115,8 +130,13 @@ Value choice(const std::string& option, const std::string& text,
 inline void check(Settings& s, const std::string& ratio, const std::string& count, const std::string& k,
                   const std::string& feature_weight, const std::string& order)
 {
-  if (ratio.empty() == count.empty())
-    throw Usage_error("give exactly one of --ratio and --count");
+  if (!ratio.empty() && !count.empty())
+    throw Usage_error("give only one of --ratio and --count");
+  if (ratio.empty() && count.empty() && !s.lod)
+    throw Usage_error("give one of --ratio and --count (with --lod, they are optional: the level made exact)");
+  if (s.write_normals && (s.lod || !s.indices.empty()))
+    throw Usage_error(std::string("--write-normals does not combine with ") + (s.lod ? "--lod" : "--indices") +
+                      ": the ranks are computed without the final normals");
   if (!ratio.empty())
   {
     s.ratio = finite_number("--ratio", ratio);
@@ -172,6 +192,16 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   app.add_option("OUTPUT", s.output, "the file to write (.ply .xyz .pwn .off .las); never the input")->required();
   app.add_option("--ratio", ratio, "keep the fraction R of the points, 0 < R <= 1")->type_name("R");
   app.add_option("--count", count, "keep N points (all of them if N exceeds the input)")->type_name("N");
+  app.add_flag("--lod", s.lod, "write every point, ordered by rank, so that any first m points are a "
+                               "simplification to m points; PLY gets a 'scalar_rank' property (CloudCompare's "
+                               "scalar field 'rank'). --ratio or --count gives the level whose points are "
+                               "exactly those a run without --lod keeps (default: one point)");
+  app.add_flag("--importance", s.importance, "add each point's importance, the value its mode orders by, "
+                                             "computed on the input: a PLY property 'scalar_importance' (double; "
+                                             "CloudCompare's scalar field 'importance'), or a LAS extra-bytes "
+                                             "attribute 'importance' after the record's own bytes");
+  app.add_option("--indices", s.indices, "write the 0-based input index of each point kept (with --lod, of "
+                                         "every point) to FILE, one per line, by rank")->type_name("FILE");
   app.add_option("-k", k, "neighbours per point (default 10; 2-1000, 5-1000 with --normals jet)")->type_name("K");
   app.add_option("--mode", mode, "default | paper: weighted elimination with denser features (default), "
                                  "or the paper's method, which keeps at least k + 1 points")->type_name("M");

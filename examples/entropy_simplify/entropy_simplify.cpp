@@ -8,7 +8,9 @@
 // options, an example for each format and the exit codes.
 
 #include "command_line.h"
+#include "indices_file.h"
 #include "input_file.h"
+#include "las_extra_bytes.h"
 #include "point_files.h"
 #include "progress.h"
 #include "quality_report.h"
@@ -18,10 +20,14 @@
 
 #include <CGAL/Real_timer.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <limits>
 #include <new>
+#include <optional>
 #include <vector>
 
 namespace entropy_simplify {
@@ -38,6 +44,34 @@ void check_formats(const Settings& s, Format in, Format out)
   if (s.write_normals && (out == Format::las || out == Format::off))
     throw Usage_error(std::string("--write-normals needs an output that stores normals (PLY or XYZ); ") +
                       (out == Format::las ? "LAS" : "plain OFF") + " does not");
+  if (s.importance && (out == Format::xyz || out == Format::off))
+    throw Usage_error("--importance needs an output that stores a scalar property (PLY or LAS); XYZ and OFF do not");
+  namespace fs = std::filesystem;
+  if (!s.indices.empty() && fs::weakly_canonical(fs::absolute(s.indices)) == fs::weakly_canonical(fs::absolute(s.output)))
+    throw Usage_error("--indices must name a file other than OUTPUT");
+}
+
+// What --importance says it is, in the file.
+const char* importance_description(const Settings& s)
+{
+  return s.options.mode == ES::Mode::paper ? "entropy of normal angles, nats" : "feature strength, 0 to 1";
+}
+
+// The points written, as a table, with --lod's ranks (PLY only: elsewhere
+// the order alone carries them) and --importance's values. Their names take
+// CloudCompare's prefix for scalar fields, which it opens as such (as
+// 'rank' and 'importance'), and ignores without it.
+Point_table table_to_write(const Settings& s, const Cloud& cloud, const std::vector<std::size_t>& rows, Format out,
+                           const std::vector<std::array<double, 3> >& normals, const std::vector<double>& importance)
+{
+  Point_table table = output_table(cloud, rows, s.write_normals ? &normals : nullptr);
+  if (s.lod && out == Format::ply)
+    set_column(table, "scalar_rank",
+               rows.size() <= std::numeric_limits<std::uint32_t>::max() ? Scalar_type::uint32 : Scalar_type::float64,
+               [](std::size_t r) { return double(r); });
+  if (s.importance)
+    set_column(table, "scalar_importance", Scalar_type::float64, [&](std::size_t r) { return importance[rows[r]]; });
+  return table;
 }
 
 void print_notes(const Settings& s, const Cloud& cloud, const Point_table& written, Format out)
@@ -86,32 +120,60 @@ int run(int argc, char** argv)
   remove_output_on_signals();
   const Input_file input = reading(s.input, [&] { return Input_file(s.input); });
   Safe_output output(s.output, s.input);
+  std::optional<Safe_output> indices;
+  if (!s.indices.empty())
+    indices.emplace(s.indices, s.input);
 
   CGAL::Real_timer timer;
   timer.start();
   const Cloud cloud = reading(s.input, [&] { return read_cloud(input.bytes(), in); });
+  if (s.importance && out == Format::las)
+    reading(s.input, [&] { return check_room_for_attribute(*cloud.las); });
 
+  // one bar for both passes: the importance takes about a third of a run
   Progress_bar progress(!s.quiet);
+  const double importance_share = s.importance ? 0.3 : 0.;
+  const std::vector<double> importance =
+    s.importance ? importance_of_rows<CGAL::Parallel_if_available_tag>(
+                     cloud, s, [&](double f) { return progress(importance_share * f); })
+                 : std::vector<double>();
   std::vector<std::array<double, 3> > normals;
-  const std::vector<std::size_t> kept =
-    simplify_cloud<CGAL::Parallel_if_available_tag>(cloud, s, std::ref(progress), normals);
+  const Selection selection = simplify_cloud<CGAL::Parallel_if_available_tag>(
+    cloud, s, [&](double f) { return progress(importance_share + (1. - importance_share) * f); }, normals);
   progress.finish();
 
-  if (out == Format::las)
-    write_las(output.sink(), *cloud.las, kept);
+  const std::vector<std::size_t>& written = s.lod ? selection.by_rank : selection.kept;
+  if (out == Format::las && s.importance)
+    write_las_with_attribute(output.sink(), *cloud.las, written, "importance", importance_description(s), importance);
+  else if (out == Format::las)
+    write_las(output.sink(), *cloud.las, written);
   else
   {
-    const Point_table table = output_table(cloud, kept, s.write_normals ? &normals : nullptr);
+    const Point_table table = table_to_write(s, cloud, written, out, normals, importance);
     print_notes(s, cloud, table, out);
     write_table(output.sink(), table, out, s.binary.value_or(in != Format::ply || cloud.binary_ply), cloud.comments);
   }
+  if (indices)
+    write_indices(indices->sink(), selection.by_rank);
+  // both complete before either replaces its target
+  output.complete();
+  if (indices)
+    indices->complete();
   output.commit();
+  if (indices)
+    indices->commit();
   timer.stop();
 
-  if (!s.quiet)
+  const std::vector<std::size_t>& kept = selection.kept;
+  const std::string targets = s.output + (s.indices.empty() ? "" : " and " + s.indices);
+  if (!s.quiet && s.lod)
+    std::printf("entropy_simplify: wrote the %zu points by rank, the first %zu exactly the simplification asked "
+                "for, in %.3g s, peak memory %.0f MiB; wrote %s\n",
+                cloud.size(), kept.size(), timer.time(), peak_memory_mib(), targets.c_str());
+  else if (!s.quiet)
     std::printf("entropy_simplify: kept %zu of %zu points (%.4g%%) in %.3g s, peak memory %.0f MiB; wrote %s\n",
                 kept.size(), cloud.size(), 100. * double(kept.size()) / double(cloud.size()), timer.time(),
-                peak_memory_mib(), s.output.c_str());
+                peak_memory_mib(), targets.c_str());
   // measured once the output is safe, so that it never delays the file
   if (s.report)
     print_quality_report(quality_of<CGAL::Parallel_if_available_tag>(cloud, kept));

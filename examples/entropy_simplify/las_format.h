@@ -313,9 +313,9 @@ inline void patch_bounds(std::string& header, const Las_file& las, const std::ve
 // The waveform data (1.3) and the EVLRs (1.4) follow the point data and move
 // with its end. An offset before that end (0 for none) points at nothing that
 // moves, and stays.
-inline void patch_offsets(std::string& header, const Las_file& las, std::size_t kept)
+inline void patch_offsets(std::string& header, const Las_file& las, std::uint64_t new_end)
 {
-  const std::uint64_t old_end = points_end(las), new_end = las.offset_to_points + kept * las.record_length;
+  const std::uint64_t old_end = points_end(las);
   const auto move = [&](std::size_t at) {
     const std::uint64_t start = load_little_endian<std::uint64_t>(&header[at]);
     if (start >= old_end)
@@ -328,14 +328,17 @@ inline void patch_offsets(std::string& header, const Las_file& las, std::size_t 
 }
 
 // A megabyte at a time: one write per record would make a syscall of each.
-inline void write_records(Sink& out, const Las_file& las, const std::vector<std::size_t>& rows)
+// `append(row, buffer)` adds what follows the bytes of record `row`.
+template <typename Append>
+void write_records(Sink& out, const Las_file& las, const std::vector<std::size_t>& rows, const Append& append)
 {
   constexpr std::size_t chunk = std::size_t(1) << 20;
   std::string buffer;
-  buffer.reserve(chunk + las.record_length);
+  buffer.reserve(chunk + 2 * las.record_length);
   for (std::size_t row : rows)
   {
     buffer.append(las.record(row), las.record_length);
+    append(row, buffer);
     if (buffer.size() >= chunk)
     {
       out.write(buffer);
@@ -356,10 +359,10 @@ inline void write_las(Sink& out, const Las_file& las, const std::vector<std::siz
   std::string header(las.bytes.substr(0, las.header_size));
   las_detail::patch_counts(header, las, rows);
   las_detail::patch_bounds(header, las, rows);
-  las_detail::patch_offsets(header, las, rows.size());
+  las_detail::patch_offsets(header, las, las.offset_to_points + rows.size() * las.record_length);
   out.write(header);
   out.write(las.bytes.substr(las.header_size, las.offset_to_points - las.header_size));
-  las_detail::write_records(out, las, rows);
+  las_detail::write_records(out, las, rows, [](std::size_t, std::string&) {});
   out.write(las.bytes.substr(las_detail::points_end(las)));
 }
 

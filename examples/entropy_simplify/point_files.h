@@ -128,6 +128,18 @@ inline std::array<double, 3> coordinates(const Cloud& cloud, const Column* const
   return { xyz[0]->values[i], xyz[1]->values[i], xyz[2]->values[i] };
 }
 
+// The column `name` of `table`, of `type`, made of `value(r)` for each row
+// r, in place of any column of that name.
+template <typename Value>
+void set_column(Point_table& table, std::string_view name, Scalar_type type, const Value& value)
+{
+  Column& column = table.column(name, type);
+  column.type = type;
+  column.values.resize(table.size());
+  for (std::size_t r = 0; r < column.values.size(); ++r)
+    column.values[r] = value(r);
+}
+
 // The properties of the kept points (`rows`) as a table, with `normals`
 // (one per row) in place of the input's when given.
 inline Point_table output_table(const Cloud& cloud, const std::vector<std::size_t>& rows,
@@ -138,13 +150,7 @@ inline Point_table output_table(const Cloud& cloud, const std::vector<std::size_
   {
     const char* const names[] = { "nx", "ny", "nz" };
     for (int c = 0; c < 3; ++c)
-    {
-      Column& column = table.column(names[c], Scalar_type::float64);
-      column.type = Scalar_type::float64;
-      column.values.resize(rows.size());
-      for (std::size_t r = 0; r < rows.size(); ++r)
-        column.values[r] = (*normals)[r][c];
-    }
+      set_column(table, names[c], Scalar_type::float64, [&](std::size_t r) { return (*normals)[r][c]; });
   }
   return table;
 }

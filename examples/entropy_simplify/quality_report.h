@@ -14,7 +14,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <vector>
 
 namespace entropy_simplify {
@@ -22,10 +21,8 @@ namespace entropy_simplify {
 template <typename ConcurrencyTag>
 CGAL::Entropy_simplification::Quality_report quality_of(const Cloud& cloud, const std::vector<std::size_t>& kept)
 {
-  std::vector<std::size_t> rows(cloud.size());
-  std::iota(rows.begin(), rows.end(), std::size_t(0));
-  const Row_point_map<std::size_t> points{ &cloud,
-                                           { cloud.table.find("x"), cloud.table.find("y"), cloud.table.find("z") } };
+  const std::vector<std::size_t> rows = all_rows<std::size_t>(cloud.size());
+  const Row_point_map<std::size_t> points = point_map_of<std::size_t>(cloud);
   return CGAL::measure_simplification_quality<ConcurrencyTag>(rows, kept, CGAL::parameters::point_map(points),
                                                               CGAL::parameters::point_map(points));
 }

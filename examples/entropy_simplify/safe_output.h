@@ -41,15 +41,18 @@ constexpr int interrupted_exit_code = 130;
 
 namespace safe_output_detail {
 
-// The temporary file the signal handler removes: a fixed buffer, since a
+// The temporary files the signal handler removes, one for each output of a
+// run (the points, and the indices of --indices): fixed buffers, since a
 // handler may not allocate.
-inline char pending_temporary[PATH_MAX];
-inline volatile std::sig_atomic_t has_pending_temporary = 0;
+inline constexpr int pending_slots = 2;
+inline char pending_temporary[pending_slots][PATH_MAX];
+inline volatile std::sig_atomic_t has_pending_temporary[pending_slots] = {};
 
 inline void remove_pending_temporary()
 {
-  if (has_pending_temporary)
-    ::unlink(pending_temporary);
+  for (int slot = 0; slot < pending_slots; ++slot)
+    if (has_pending_temporary[slot])
+      ::unlink(pending_temporary[slot]);
 }
 
 inline void say(const char* message) { [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, std::strlen(message)); }
@@ -224,10 +227,13 @@ public:
 
   Sink& sink() { return *sink_; }
 
-  // Writes out what the sink holds, syncs it to the disk, and renames it
-  // over the target, which until then is untouched.
-  void commit()
+  // Writes out what the sink holds and syncs it to the disk, where a full
+  // disk shows: a run with two outputs completes both before it commits
+  // either, so that a failure leaves both targets untouched.
+  void complete()
   {
+    if (descriptor_ < 0)
+      return;
     sink_->flush();
     if (::fsync(descriptor_) != 0 || ::fchmod(descriptor_, mode_) != 0)
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno));
@@ -235,11 +241,18 @@ public:
     descriptor_ = -1;
     if (::close(descriptor) != 0)
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno));
+  }
+
+  // Completes the file, and renames it over the target, which until then is
+  // untouched.
+  void commit()
+  {
+    complete();
     {
       safe_output_detail::Signals_blocked blocked;
       if (::rename(temporary_.c_str(), target_.c_str()) != 0)
         throw Output_error("cannot replace '" + path_ + "': " + safe_output_detail::reason(errno));
-      safe_output_detail::has_pending_temporary = 0;
+      safe_output_detail::has_pending_temporary[slot_] = 0;
       committed_ = true;
     }
     sync_folder();
@@ -302,13 +315,17 @@ private:
     if (pattern.size() >= PATH_MAX)
       throw Output_error("cannot write '" + path_ + "': the path is too long");
     safe_output_detail::Signals_blocked blocked;
+    while (slot_ < safe_output_detail::pending_slots && safe_output_detail::has_pending_temporary[slot_])
+      ++slot_;
+    if (slot_ == safe_output_detail::pending_slots)
+      throw std::logic_error("more outputs at once than the signal handler can clean up");
     descriptor_ = ::mkstemp(pattern.data());
     if (descriptor_ < 0)
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno) +
                          " (creating a file in '" + folder + "')");
     temporary_ = pattern;
-    std::memcpy(safe_output_detail::pending_temporary, pattern.c_str(), pattern.size() + 1);
-    safe_output_detail::has_pending_temporary = 1;
+    std::memcpy(safe_output_detail::pending_temporary[slot_], pattern.c_str(), pattern.size() + 1);
+    safe_output_detail::has_pending_temporary[slot_] = 1;
     sink_.reset(new File_sink(descriptor_, path_));
   }
 
@@ -318,7 +335,7 @@ private:
       return;
     safe_output_detail::Signals_blocked blocked;
     ::unlink(temporary_.c_str());
-    safe_output_detail::has_pending_temporary = 0;
+    safe_output_detail::has_pending_temporary[slot_] = 0;
   }
 
   // The rename is durable once the folder is synced; the file itself is
@@ -336,6 +353,7 @@ private:
   std::string path_, target_, temporary_;
   mode_t mode_;
   int descriptor_ = -1;
+  int slot_ = 0; // in safe_output_detail::pending_temporary
   bool committed_ = false;
   std::unique_ptr<File_sink> sink_;
 };

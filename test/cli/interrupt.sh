@@ -6,16 +6,22 @@
 # The existing output must be untouched. INT, TERM and HUP exit with 130, BUS
 # (what an input that shrinks while mapped raises) with 1, SEGV (a crash) with
 # 139, each leaving no temporary file; after KILL, at most one hidden
-# temporary file remains.
+# temporary file remains. With a sixth argument "indices", the run also writes
+# --indices over an existing file, which must be untouched too, its temporary
+# file removed with the output's.
 set -u
-program=$1 input=$2 work=$3 signal=$4 phase=$5
+program=$1 input=$2 work=$3 signal=$4 phase=$5 outputs=${6:-}
 rm -rf "$work" && mkdir -p "$work"
 echo "an existing output" > "$work/out.ply"
-before=$(sha256sum < "$work/out.ply")
+echo "existing indices" > "$work/idx.txt"
+before=$(cat "$work/out.ply" "$work/idx.txt" | sha256sum)
 if [ "$phase" = writing ]; then export ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES=1; fi
-"$program" "$input" "$work/out.ply" --ratio 0.01 --mode paper -k 20 --quiet &
+indices=()
+[ "$outputs" = indices ] && indices=(--indices "$work/idx.txt")
+"$program" "$input" "$work/out.ply" --ratio 0.01 --mode paper -k 20 --quiet "${indices[@]}" &
 pid=$!
 temporary() { compgen -G "$work/.out.ply.??????"; }
+all_temporaries() { compgen -G "$work/.*.??????"; }
 for _ in $(seq 400); do
   if [ "$phase" = writing ]; then
     [ -s "$(temporary | head -1)" ] && break # bytes written: the run is in the writer
@@ -29,8 +35,8 @@ kill -"$signal" "$pid"
 wait "$pid"
 code=$?
 fail() { echo "FAIL: $*"; ls -la "$work"; exit 1; }
-[ "$(sha256sum < "$work/out.ply")" = "$before" ] || fail "the existing output was changed"
-temporaries=$(temporary | wc -l)
+[ "$(cat "$work/out.ply" "$work/idx.txt" | sha256sum)" = "$before" ] || fail "an existing output was changed"
+temporaries=$(all_temporaries | wc -l)
 case $signal in
   KILL) expected=137 ;;    # killed: nothing can run
   BUS) expected=1 ;;       # the mapped input failed: a failure, reported
@@ -39,7 +45,7 @@ case $signal in
 esac
 [ "$code" -eq "$expected" ] || fail "exit code $code, expected $expected"
 if [ "$signal" = KILL ]; then
-  [ "$temporaries" -le 1 ] || fail "$temporaries temporary files left"
+  [ "$temporaries" -le 2 ] || fail "$temporaries temporary files left"
 else
   [ "$temporaries" -eq 0 ] || fail "a temporary file was left"
 fi

@@ -33,10 +33,11 @@ def ply_header(encoding, count, properties, extra=""):
 
 
 def las(points, version=(1, 2), point_format=0, count=None, signature=b"LASF", scale=0.001, offset=(0., 0., 0.),
-        vlr=b""):
-    """A LAS file of `points` (LAS 1.0-1.3 header layout, 227 or 235 bytes)."""
+        vlr=b"", vlr_count=None, extra=0):
+    """A LAS file of `points` (LAS 1.0-1.3 header layout, 227 or 235 bytes),
+    with `extra` bytes after each record's own."""
     header_size = 235 if version >= (1, 3) else 227
-    record_length = {0: 20, 1: 28, 2: 26, 3: 34}[point_format]
+    record_length = {0: 20, 1: 28, 2: 26, 3: 34}[point_format] + extra
     offset_to_points = header_size + len(vlr)
     n = len(points) if count is None else count
     xs = [p[0] for p in points] or [0.]
@@ -47,8 +48,8 @@ def las(points, version=(1, 2), point_format=0, count=None, signature=b"LASF", s
     h[24], h[25] = version
     h[26:58] = b"make_inputs.py".ljust(32, b"\0")
     h[58:90] = b"entropy_simplify tests".ljust(32, b"\0")
-    struct.pack_into("<HHHIIBHI", h, 90, 1, 2026, header_size, offset_to_points, 1 if vlr else 0, point_format,
-                     record_length, n)
+    vlrs = (1 if vlr else 0) if vlr_count is None else vlr_count
+    struct.pack_into("<HHHIIBHI", h, 90, 1, 2026, header_size, offset_to_points, vlrs, point_format, record_length, n)
     struct.pack_into("<5I", h, 111, n, 0, 0, 0, 0)
     struct.pack_into("<3d3d", h, 131, scale, scale, scale, *offset)
     struct.pack_into("<6d", h, 179, max(xs) + offset[0], min(xs) + offset[0], max(ys) + offset[1],
@@ -57,6 +58,7 @@ def las(points, version=(1, 2), point_format=0, count=None, signature=b"LASF", s
     for i, p in enumerate(points):
         r = bytearray(record_length)
         struct.pack_into("<3iHBBbBH", r, 0, *(round(c / scale) for c in p), 100 + i, 0x09, 2, 0, 0, 7)
+        r[record_length - extra:] = bytes((i + b) % 256 for b in range(extra))
         body += r
     return bytes(h) + vlr + bytes(body)
 
@@ -99,6 +101,12 @@ def vlr(user, record_id, payload):
     return struct.pack("<H16sHH32s", 0, user, record_id, len(payload), b"a test record") + payload
 
 
+def extra_bytes_descriptor(data_type, name):
+    """A descriptor of the Extra Bytes VLR (LAS 1.4 R15, 2.6): 192 bytes."""
+    return struct.pack("<2sBB32s4s24s24s24s24s24s32s", b"", data_type, 0, name, b"", b"", b"", b"", b"", b"",
+                       b"a test attribute")
+
+
 def main():
     points = grid()
     # well-formed files in every input format
@@ -126,7 +134,15 @@ def main():
     # the same integer records, georeferenced: only the header's offsets differ
     write("grid_georeferenced.las", las(points, offset=(512345.67, 4123456.78, 250.), vlr=vlr(b"entropy_tests", 7,
                                                                                               b"payload bytes")))
+    # extra bytes after the records' own: none declared, or 2 of 6 declared (a ushort)
+    write("grid_undocumented_extra_bytes.las", las(points, extra=3, vlr=vlr(b"entropy_tests", 7, b"payload bytes")))
+    write("grid_declared_extra_bytes.las",
+          las(points, extra=6, vlr_count=2, vlr=vlr(b"entropy_tests", 7, b"payload bytes") +
+              vlr(b"LASF_Spec", 4, extra_bytes_descriptor(3, b"strength"))))
     write("duplicates.xyz", "1 2 3\n" * 200)
+    # an Extra Bytes VLR declaring a double the records do not have
+    write("grid_overdeclared_extra_bytes.las", las(points, vlr_count=1, vlr=vlr(b"LASF_Spec", 4,
+                                                                                extra_bytes_descriptor(10, b"ghost"))))
     write("grid_cr.xyz", xyz_text(points).replace("\n", "\r"))
 
     # bad input: each file is one row of the table in doc/Entropy_simplification.txt
