@@ -107,9 +107,8 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
    `CGAL::entropy_simplify_point_set()`
    \param importance receives the importance of each point, in the order of
    the range
-   \param np an optional sequence of \ref bgl_namedparameters "Named
-   Parameters" among the ones listed below; any other is rejected at compile
-   time
+   \param np an optional sequence of \ref bgl_namedparameters "Named Parameters"
+   among the ones listed below; any other is rejected at compile time
    \param options the package's options (`Entropy_simplification::Options`);
    this function reads `mode`, `normal_estimation` and, in `Mode::paper`,
    `reference_normal`

@@ -121,9 +121,8 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    `CGAL::entropy_simplify_point_set()`
    \param ranks receives the rank of each point, in `[0, n)`, in the order of
    the range: the ranks of `n` points are a permutation of `0, ..., n - 1`
-   \param np an optional sequence of \ref bgl_namedparameters "Named
-   Parameters" among the ones listed below; any other is rejected at compile
-   time
+   \param np an optional sequence of \ref bgl_namedparameters "Named Parameters"
+   among the ones listed below; any other is rejected at compile time
    \param options the package's options (`Entropy_simplification::Options`)
 
    \cgalNamedParamsBegin
