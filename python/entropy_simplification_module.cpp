@@ -1,0 +1,324 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Python module entropy_simplification: the package on NumPy arrays of
+// points. Each function takes an (n, 3) array of float64 or float32, of any
+// strides (copied where needed), and the library's options as keywords; it
+// releases the GIL while it computes, and Ctrl-C raises KeyboardInterrupt at
+// the library's next progress call.
+
+#include <CGAL/Entropy_simplification/compute_entropy_importance.h>
+#include <CGAL/Entropy_simplification/entropy_simplification_ranks.h>
+#include <CGAL/Entropy_simplification/measure_simplification_quality.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+namespace ES = CGAL::Entropy_simplification;
+using Point = CGAL::Simple_cartesian<double>::Point_3;
+using Tag = CGAL::Parallel_if_available_tag;
+
+namespace {
+
+// The rows of an (n, 3) array as points: a contiguous copy in doubles,
+// made by NumPy only where the array is not one already.
+using Points_array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+struct Row_point_map
+{
+  using key_type = std::size_t;
+  using value_type = Point;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+
+  const double* xyz;
+
+  friend value_type get(const Row_point_map& map, std::size_t row)
+  {
+    return value_type(map.xyz[3 * row], map.xyz[3 * row + 1], map.xyz[3 * row + 2]);
+  }
+};
+
+// The points of `array`, checked: the rows of the returned range are row
+// numbers, read through `map`.
+struct Rows
+{
+  Points_array array;
+  std::vector<std::size_t> rows;
+  Row_point_map map;
+};
+
+Rows rows_of(const py::handle& points, const char* name)
+{
+  Points_array array = Points_array::ensure(points);
+  if (!array || array.ndim() != 2 || array.shape(1) != 3)
+    throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
+  Rows result{ array, std::vector<std::size_t>(std::size_t(array.shape(0))), Row_point_map{ array.data() } };
+  for (std::size_t i = 0; i < result.rows.size(); ++i)
+    result.rows[i] = i;
+  return result;
+}
+
+// The keyword options, checked as the program checks its own.
+struct Call_options
+{
+  ES::Options options;
+  unsigned int k = 10;
+  std::optional<double> ratio;
+  std::optional<std::size_t> count;
+  std::optional<std::size_t> threads;
+};
+
+template <typename Value>
+Value choice(const char* option, const std::string& text, const std::vector<std::pair<std::string, Value> >& choices)
+{
+  std::string names;
+  for (const auto& c : choices)
+  {
+    if (c.first == text)
+      return c.second;
+    names += (names.empty() ? "'" : " or '") + c.first + "'";
+  }
+  throw std::invalid_argument(std::string(option) + " must be " + names + ", got '" + text + "'");
+}
+
+Call_options call_options(const py::object& ratio, const py::object& count, long long k, const std::string& mode,
+                          const py::object& feature_weight, const std::string& normals, const py::object& order,
+                          const py::object& threads)
+{
+  Call_options c;
+  if (!ratio.is_none() && !count.is_none())
+    throw std::invalid_argument("give only one of ratio and count");
+  if (!ratio.is_none())
+  {
+    c.ratio = ratio.cast<double>();
+    if (!(*c.ratio > 0. && *c.ratio <= 1.))
+      throw std::invalid_argument("ratio must lie in (0, 1], got " + py::repr(ratio).cast<std::string>());
+  }
+  if (!count.is_none())
+  {
+    const long long n = count.cast<long long>();
+    if (n < 1)
+      throw std::invalid_argument("count must be at least 1, got " + std::to_string(n));
+    c.count = std::size_t(n);
+  }
+  if (k < 0 || k > 1000000)
+    throw std::invalid_argument("k = " + std::to_string(k) + " is out of range");
+  c.k = unsigned(k);
+  c.options.mode = choice<ES::Mode>("mode", mode, { { "default", ES::Mode::weighted_elimination },
+                                                    { "paper", ES::Mode::paper } });
+  c.options.normal_estimation = choice<ES::Normal_estimation>(
+    "normals", normals, { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
+  if (!feature_weight.is_none())
+  {
+    if (c.options.mode == ES::Mode::paper)
+      throw std::invalid_argument("feature_weight applies to the default mode only");
+    c.options.feature_weight = feature_weight.cast<double>();
+  }
+  if (!order.is_none())
+  {
+    if (c.options.mode != ES::Mode::paper)
+      throw std::invalid_argument("order applies to mode='paper' only");
+    c.options.removal_order = choice<ES::Removal_order>(
+      "order", order.cast<std::string>(), { { "lowest", ES::Removal_order::lowest_entropy_first },
+                                            { "highest", ES::Removal_order::highest_entropy_first } });
+  }
+  if (!threads.is_none())
+  {
+    const long long n = threads.cast<long long>();
+    if (n < 1)
+      throw std::invalid_argument("threads must be at least 1, got " + std::to_string(n));
+    c.threads = std::size_t(n);
+  }
+  return c;
+}
+
+// Runs `compute(callback)` without the GIL, on at most `threads` worker
+// threads. The callback, which the library calls on this thread, takes the
+// GIL back to check for signals: a pending KeyboardInterrupt stops the
+// computation, and is raised once it has stopped.
+template <typename Compute>
+auto without_gil(const std::optional<std::size_t>& threads, const Compute& compute)
+{
+  bool interrupted = false;
+  const std::function<bool(double)> callback = [&interrupted](double) {
+    py::gil_scoped_acquire gil;
+    interrupted = interrupted || PyErr_CheckSignals() != 0;
+    return !interrupted;
+  };
+  decltype(compute(callback)) result;
+  {
+    py::gil_scoped_release released;
+#ifdef CGAL_LINKED_WITH_TBB
+    std::unique_ptr<tbb::global_control> limit;
+    if (threads)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *threads);
+#else
+    (void)threads;
+#endif
+    result = compute(callback);
+  }
+  if (interrupted)
+    throw py::error_already_set();
+  return result;
+}
+
+// The rank of every row, the level of `c` (if any) exact.
+std::vector<std::size_t> ranks_of(const Rows& points, const Call_options& c)
+{
+  return without_gil(c.threads, [&](const std::function<bool(double)>& callback) {
+    std::vector<std::size_t> ranks;
+    ranks.reserve(points.rows.size());
+    const auto np = CGAL::parameters::point_map(points.map).callback(callback);
+    const auto into = std::back_inserter(ranks);
+    const bool done =
+      c.ratio   ? CGAL::entropy_simplification_ranks<Tag>(points.rows, c.k, into,
+                                                          np.select_percentage(*c.ratio * 100.), c.options)
+      : c.count ? CGAL::entropy_simplification_ranks<Tag>(points.rows, c.k, into,
+                                                          np.number_of_output_points(*c.count), c.options)
+                : CGAL::entropy_simplification_ranks<Tag>(points.rows, c.k, into, np, c.options);
+    if (!done)
+      ranks.clear();
+    return ranks;
+  });
+}
+
+template <typename T>
+py::array_t<T> to_array(const std::vector<T>& values)
+{
+  py::array_t<T> array(py::ssize_t(values.size()));
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  return array;
+}
+
+py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& ratio, const py::object& count,
+                                   long long k, const std::string& mode, const py::object& feature_weight,
+                                   const std::string& normals, const py::object& order, const py::object& threads)
+{
+  const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
+  if (!c.ratio && !c.count)
+    throw std::invalid_argument("give one of ratio and count");
+  const Rows rows = rows_of(points, "points");
+  const std::size_t n = rows.rows.size();
+  const std::size_t kept = c.ratio ? ES::internal::kept_count_from_percentage(n, *c.ratio * 100.)
+                                   : (std::min)(n, *c.count);
+  // as a direct call: the ranks alone would take any count
+  if (c.options.mode == ES::Mode::paper && n > 0 && kept < std::size_t(c.k) + 1)
+    throw std::invalid_argument("the paper's mode must keep at least k + 1 = " + std::to_string(c.k + 1) +
+                                " points so that every point keeps k neighbours; " + std::to_string(kept) +
+                                " were asked");
+  const std::vector<std::size_t> ranks = ranks_of(rows, c);
+  std::vector<std::int64_t> by_rank(n);
+  for (std::size_t i = 0; i < n; ++i)
+    by_rank[ranks[i]] = std::int64_t(i);
+  by_rank.resize(kept);
+  return to_array(by_rank);
+}
+
+py::array_t<std::int64_t> ranks(const py::handle& points, const py::object& ratio, const py::object& count,
+                                long long k, const std::string& mode, const py::object& feature_weight,
+                                const std::string& normals, const py::object& order, const py::object& threads)
+{
+  const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
+  const std::vector<std::size_t> r = ranks_of(rows_of(points, "points"), c);
+  return to_array(std::vector<std::int64_t>(r.begin(), r.end()));
+}
+
+py::array_t<double> importance(const py::handle& points, long long k, const std::string& mode,
+                               const std::string& normals, const py::object& threads)
+{
+  const Call_options c = call_options(py::none(), py::none(), k, mode, py::none(), normals, py::none(), threads);
+  const Rows rows = rows_of(points, "points");
+  return to_array(without_gil(c.threads, [&](const std::function<bool(double)>& callback) {
+    std::vector<double> values;
+    values.reserve(rows.rows.size());
+    if (!CGAL::compute_entropy_importance<Tag>(rows.rows, c.k, std::back_inserter(values),
+                                               CGAL::parameters::point_map(rows.map).callback(callback), c.options))
+      values.clear();
+    return values;
+  }));
+}
+
+py::dict report(const py::handle& points, const py::handle& kept_indices)
+{
+  const Rows rows = rows_of(points, "points");
+  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(kept_indices);
+  if (!indices || indices.ndim() != 1)
+    throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
+  std::vector<std::size_t> kept(std::size_t(indices.shape(0)));
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    const std::int64_t i = indices.data()[j];
+    if (i < 0 || std::size_t(i) >= rows.rows.size())
+      throw std::invalid_argument("kept_idx holds " + std::to_string(i) + ", not an index of the " +
+                                  std::to_string(rows.rows.size()) + " points");
+    kept[j] = std::size_t(i);
+  }
+  const ES::Quality_report r = without_gil(std::nullopt, [&](const std::function<bool(double)>&) {
+    return CGAL::measure_simplification_quality<Tag>(rows.rows, kept, CGAL::parameters::point_map(rows.map),
+                                                     CGAL::parameters::point_map(rows.map));
+  });
+  py::dict d;
+  d["mean_distance"] = r.mean_distance;
+  d["max_distance"] = r.max_distance;
+  d["point_to_plane"] = r.point_to_plane;
+  d["diagonal"] = r.diagonal;
+  d["input_size"] = r.input_size;
+  d["kept_size"] = r.kept_size;
+  return d;
+}
+
+} // namespace
+
+PYBIND11_MODULE(entropy_simplification, m)
+{
+  m.doc() = "Point cloud simplification by the local entropy of normals (CGAL package Entropy_simplification).";
+  const char* options_doc =
+    "ratio: the fraction of the points to keep, in (0, 1]; count: the number of points to keep.\n"
+    "k: neighbours per point (default 10). mode: 'default' or 'paper'. feature_weight: default mode,\n"
+    "features keep up to 1 + W times the density of flat regions (default 3). normals: 'pca' or 'jet'.\n"
+    "order: paper mode, 'lowest' (default) or 'highest' entropy removed first. threads: at most N\n"
+    "worker threads (default: all). Bad input raises ValueError; Ctrl-C raises KeyboardInterrupt.";
+  m.def("simplify", &simplify, py::arg("points"), py::kw_only(), py::arg("ratio") = py::none(),
+        py::arg("count") = py::none(), py::arg("k") = 10, py::arg("mode") = "default",
+        py::arg("feature_weight") = py::none(), py::arg("normals") = "pca", py::arg("order") = py::none(),
+        py::arg("threads") = py::none(),
+        (std::string("simplify(points, *, ratio=None, count=None, ...) -> int64 array: the indices of the kept "
+                     "points, in rank order (the most important first); exactly one of ratio and count.\n") +
+         options_doc)
+          .c_str());
+  m.def("ranks", &ranks, py::arg("points"), py::kw_only(), py::arg("ratio") = py::none(),
+        py::arg("count") = py::none(), py::arg("k") = 10, py::arg("mode") = "default",
+        py::arg("feature_weight") = py::none(), py::arg("normals") = "pca", py::arg("order") = py::none(),
+        py::arg("threads") = py::none(),
+        (std::string("ranks(points, *, ratio=None, count=None, ...) -> int64 array: the rank of each point, 0 "
+                     "kept longest; the points of rank below m are a simplification to m points. In the default "
+                     "mode, the level of ratio or count (one point if neither) is exactly simplify()'s result.\n") +
+         options_doc)
+          .c_str());
+  m.def("importance", &importance, py::arg("points"), py::kw_only(), py::arg("k") = 10,
+        py::arg("mode") = "default", py::arg("normals") = "pca", py::arg("threads") = py::none(),
+        "importance(points, *, k=10, mode='default', normals='pca', threads=None) -> float64 array: the value "
+        "each mode orders the points by, on the input: the feature strength in [0, 1] (default mode), the "
+        "entropy of normal angles of Eq. 5 in nats (paper mode).");
+  m.def("report", &report, py::arg("points"), py::arg("kept_idx"),
+        "report(points, kept_idx) -> dict: the quality of the points kept_idx against all points: "
+        "mean_distance, max_distance (to the nearest kept point) and point_to_plane, over the bounding-box "
+        "diagonal; diagonal, input_size, kept_size.");
+}
