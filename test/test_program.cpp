@@ -9,12 +9,15 @@
 #include "las_extra_bytes.h"
 #include "point_files.h"
 #include "quality_report.h"
+#include "render_png.h"
 #include "require_tbb.h"
 #include "safe_output.h"
 #include "thread_limit.h"
 #include "simplify_cloud.h"
 
 #include <sys/stat.h>
+
+#include <stb_image.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -264,7 +267,7 @@ TEST_CASE("Ranked runs (--lod, --indices): the level's rows are the plain run's,
   CHECK(selection_of<CGAL::Sequential_tag>(cloud, alone).kept.size() == 11);
 }
 
-TEST_CASE("--indices writes one 0-based index a line, in the order given", "[program][lod]")
+TEST_CASE("The file of --indices: one 0-based index a line, in the order given", "[program][lod]")
 {
   es::String_sink sink;
   es::write_indices(sink, { 7, 0, 123456789012, 3 });
@@ -274,7 +277,7 @@ TEST_CASE("--indices writes one 0-based index a line, in the order given", "[pro
   CHECK(empty.bytes.empty());
 }
 
-TEST_CASE("--importance in LAS: the records' bytes, then the attribute, declared in the Extra Bytes VLR",
+TEST_CASE("The importance in LAS: the records' bytes, then the attribute, declared in the Extra Bytes VLR",
           "[program][las][importance]")
 {
   for (const std::string name : { "grid.las", "grid_1_4_format_10.las", "grid_undocumented_extra_bytes.las",
@@ -317,6 +320,50 @@ TEST_CASE("--importance in LAS: the records' bytes, then the attribute, declared
   }
   es::Input_file bad(cli_input("grid_overdeclared_extra_bytes.las"));
   CHECK_THROWS_AS(es::check_room_for_attribute(es::read_las(bad.bytes())), es::Read_error);
+}
+
+TEST_CASE("The picture of --render: the input beside the result, by importance, a PNG that decodes",
+          "[program][render]")
+{
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < cloud.size(); i += 4)
+    kept.push_back(i);
+  std::vector<double> importance(cloud.size(), 0.);
+  importance[0] = 2.; // the greatest: yellow, the others dark purple
+  const es::Picture picture = es::render_side_by_side(cloud, kept, importance);
+  es::String_sink sink;
+  es::write_png(sink, picture);
+  REQUIRE(sink.bytes.substr(1, 3) == "PNG");
+
+  int width = 0, height = 0, channels = 0;
+  std::unique_ptr<unsigned char, void (*)(void*)> rgb(
+    stbi_load_from_memory(reinterpret_cast<const unsigned char*>(sink.bytes.data()), int(sink.bytes.size()), &width,
+                          &height, &channels, 3),
+    stbi_image_free);
+  REQUIRE(rgb);
+  REQUIRE(width == picture.width);
+  REQUIRE(height == picture.height);
+  CHECK(std::equal(picture.rgb.begin(), picture.rgb.end(), rgb.get()));
+  // painted pixels in each panel (not white, below the titles, above the legend)
+  const auto painted = [&](int from, int to, std::array<std::uint8_t, 3> colour) {
+    std::size_t count = 0;
+    for (int y = 40; y < height - 40; ++y)
+      for (int x = from; x < to; ++x)
+        count += std::equal(colour.begin(), colour.end(), rgb.get() + (std::size_t(y) * width + x) * 3);
+    return count;
+  };
+  const std::array<std::uint8_t, 3> purple = es::render_detail::colour_of(0.), yellow = es::render_detail::colour_of(1.);
+  CHECK(purple == std::array<std::uint8_t, 3>{ 68, 1, 84 });
+  CHECK(yellow == std::array<std::uint8_t, 3>{ 253, 231, 37 });
+  const std::size_t input_purple = painted(0, width / 2, purple), result_purple = painted(width / 2, width, purple);
+  CHECK(result_purple > 0);
+  CHECK(input_purple > 2 * result_purple); // a quarter of the points, discs of the same size
+  CHECK(painted(0, width / 2, yellow) > 0);
+  CHECK(painted(width / 2, width, yellow) > 0); // point 0 is kept
+  const unsigned char* corner = rgb.get() + (std::size_t(height - 1) * width + width - 1) * 3;
+  CHECK((corner[0] == 255 && corner[1] == 255 && corner[2] == 255));
 }
 
 TEST_CASE("The thread limit of --threads holds while it lives, and the result does not change",

@@ -46,6 +46,7 @@ struct Settings
   bool lod = false;        // --lod: every point, by rank
   bool importance = false; // --importance: a scalar property
   std::string indices;     // --indices FILE: the input indices written, by rank
+  std::string render;      // --render FILE.png: the input beside the result
   bool report = false;
   std::optional<std::size_t> threads; // --threads; all the hardware threads otherwise
   bool quiet = false;
@@ -64,6 +65,12 @@ inline const char* examples_text()
          "  entropy_simplify scan.xyz out.xyz --ratio 0.2    XYZ (and .pwn): x y z [nx ny nz]\n"
          "  entropy_simplify mesh.off out.off --count 5000   OFF in: the vertices; OFF out: plain OFF\n"
          "                                                   (Open3D reads no points-only OFF: use PLY)\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1 --mode paper --order highest -k 12\n"
+         "                                                   the paper's method, greatest entropy first\n"
+         "  entropy_simplify scan.ply out.ply --count 5000 --normals jet --feature-weight 5 --write-normals\n"
+         "                                                   jet normals, denser features, normals written\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1 --ascii --quiet\n"
+         "                                                   text PLY, and nothing printed\n"
          "  entropy_simplify scan.ply lod.ply --lod --ratio 0.01\n"
          "                                                   every point, by rank, with its rank: any\n"
          "                                                   first m points are a simplification, the\n"
@@ -76,6 +83,8 @@ inline const char* examples_text()
          "  entropy_simplify scan.xyz out.xyz --ratio 0.1 --indices kept.txt\n"
          "                                                   and the kept points' 0-based input indices,\n"
          "                                                   one per line, by rank\n"
+         "  entropy_simplify scan.ply out.ply --ratio 0.1 --render view.png\n"
+         "                                                   and a picture of the input beside the result\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.05 --report\n"
          "                                                   and how far the input lies from the result\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.1 --threads 4\n"
@@ -200,6 +209,8 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
                                              "computed on the input: a PLY property 'scalar_importance' (double; "
                                              "CloudCompare's scalar field 'importance'), or a LAS extra-bytes "
                                              "attribute 'importance' after the record's own bytes");
+  app.add_option("--render", s.render, "draw the input beside the result, coloured by importance, to the PNG "
+                                       "file FILE.png (no display needed)")->type_name("FILE.png");
   app.add_option("--indices", s.indices, "write the 0-based input index of each point kept (with --lod, of "
                                          "every point) to FILE, one per line, by rank")->type_name("FILE");
   app.add_option("-k", k, "neighbours per point (default 10; 2-1000, 5-1000 with --normals jet)")->type_name("K");

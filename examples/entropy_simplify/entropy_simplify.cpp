@@ -13,6 +13,7 @@
 #include "las_extra_bytes.h"
 #include "point_files.h"
 #include "progress.h"
+#include "render_png.h"
 #include "quality_report.h"
 #include "safe_output.h"
 #include "simplify_cloud.h"
@@ -47,8 +48,13 @@ void check_formats(const Settings& s, Format in, Format out)
   if (s.importance && (out == Format::xyz || out == Format::off))
     throw Usage_error("--importance needs an output that stores a scalar property (PLY or LAS); XYZ and OFF do not");
   namespace fs = std::filesystem;
-  if (!s.indices.empty() && fs::weakly_canonical(fs::absolute(s.indices)) == fs::weakly_canonical(fs::absolute(s.output)))
-    throw Usage_error("--indices must name a file other than OUTPUT");
+  const auto same_file = [](const std::string& a, const std::string& b) {
+    return !a.empty() && !b.empty() && fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
+  };
+  if (same_file(s.indices, s.output) || same_file(s.render, s.output) || same_file(s.render, s.indices))
+    throw Usage_error("--indices, --render and OUTPUT must name different files");
+  if (!s.render.empty() && fs::path(s.render).extension() != ".png" && fs::path(s.render).extension() != ".PNG")
+    throw Usage_error("--render writes PNG: give a file name ending in .png, got '" + s.render + "'");
 }
 
 // What --importance says it is, in the file.
@@ -120,9 +126,11 @@ int run(int argc, char** argv)
   remove_output_on_signals();
   const Input_file input = reading(s.input, [&] { return Input_file(s.input); });
   Safe_output output(s.output, s.input);
-  std::optional<Safe_output> indices;
+  std::optional<Safe_output> indices, picture;
   if (!s.indices.empty())
     indices.emplace(s.indices, s.input);
+  if (!s.render.empty())
+    picture.emplace(s.render, s.input);
 
   CGAL::Real_timer timer;
   timer.start();
@@ -132,11 +140,12 @@ int run(int argc, char** argv)
 
   // one bar for both passes: the importance takes about a third of a run
   Progress_bar progress(!s.quiet);
-  const double importance_share = s.importance ? 0.3 : 0.;
+  const bool with_importance = s.importance || picture;
+  const double importance_share = with_importance ? 0.3 : 0.;
   const std::vector<double> importance =
-    s.importance ? importance_of_rows<CGAL::Parallel_if_available_tag>(
-                     cloud, s, [&](double f) { return progress(importance_share * f); })
-                 : std::vector<double>();
+    with_importance ? importance_of_rows<CGAL::Parallel_if_available_tag>(
+                        cloud, s, [&](double f) { return progress(importance_share * f); })
+                    : std::vector<double>();
   std::vector<std::array<double, 3> > normals;
   const Selection selection = simplify_cloud<CGAL::Parallel_if_available_tag>(
     cloud, s, [&](double f) { return progress(importance_share + (1. - importance_share) * f); }, normals);
@@ -155,17 +164,20 @@ int run(int argc, char** argv)
   }
   if (indices)
     write_indices(indices->sink(), selection.by_rank);
-  // both complete before either replaces its target
-  output.complete();
-  if (indices)
-    indices->complete();
-  output.commit();
-  if (indices)
-    indices->commit();
+  if (picture)
+    write_png(picture->sink(), render_side_by_side(cloud, selection.kept, importance));
+  // all complete before any replaces its target
+  for (Safe_output* file : { &output, indices ? &*indices : nullptr, picture ? &*picture : nullptr })
+    if (file)
+      file->complete();
+  for (Safe_output* file : { &output, indices ? &*indices : nullptr, picture ? &*picture : nullptr })
+    if (file)
+      file->commit();
   timer.stop();
 
   const std::vector<std::size_t>& kept = selection.kept;
-  const std::string targets = s.output + (s.indices.empty() ? "" : " and " + s.indices);
+  const std::string targets =
+    s.output + (s.indices.empty() ? "" : ", " + s.indices) + (s.render.empty() ? "" : ", " + s.render);
   if (!s.quiet && s.lod)
     std::printf("entropy_simplify: wrote the %zu points by rank, the first %zu exactly the simplification asked "
                 "for, in %.3g s, peak memory %.0f MiB; wrote %s\n",

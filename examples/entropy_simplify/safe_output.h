@@ -42,9 +42,9 @@ constexpr int interrupted_exit_code = 130;
 namespace safe_output_detail {
 
 // The temporary files the signal handler removes, one for each output of a
-// run (the points, and the indices of --indices): fixed buffers, since a
-// handler may not allocate.
-inline constexpr int pending_slots = 2;
+// run (the points, the indices of --indices, the picture of --render): fixed
+// buffers, since a handler may not allocate.
+inline constexpr int pending_slots = 3;
 inline char pending_temporary[pending_slots][PATH_MAX];
 inline volatile std::sig_atomic_t has_pending_temporary[pending_slots] = {};
 

@@ -6,19 +6,20 @@
 # The existing output must be untouched. INT, TERM and HUP exit with 130, BUS
 # (what an input that shrinks while mapped raises) with 1, SEGV (a crash) with
 # 139, each leaving no temporary file; after KILL, at most one hidden
-# temporary file remains. With a sixth argument "indices", the run also writes
-# --indices over an existing file, which must be untouched too, its temporary
-# file removed with the output's.
+# temporary file remains. With a sixth argument "all", the run also writes
+# --indices and --render over existing files, which must be untouched too,
+# their temporary files removed with the output's.
 set -u
 program=$1 input=$2 work=$3 signal=$4 phase=$5 outputs=${6:-}
 rm -rf "$work" && mkdir -p "$work"
 echo "an existing output" > "$work/out.ply"
 echo "existing indices" > "$work/idx.txt"
-before=$(cat "$work/out.ply" "$work/idx.txt" | sha256sum)
+echo "an existing picture" > "$work/view.png"
+before=$(cat "$work/out.ply" "$work/idx.txt" "$work/view.png" | sha256sum)
 if [ "$phase" = writing ]; then export ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES=1; fi
-indices=()
-[ "$outputs" = indices ] && indices=(--indices "$work/idx.txt")
-"$program" "$input" "$work/out.ply" --ratio 0.01 --mode paper -k 20 --quiet "${indices[@]}" &
+others=()
+[ "$outputs" = all ] && others=(--indices "$work/idx.txt" --render "$work/view.png")
+"$program" "$input" "$work/out.ply" --ratio 0.01 --mode paper -k 20 --quiet "${others[@]}" &
 pid=$!
 temporary() { compgen -G "$work/.out.ply.??????"; }
 all_temporaries() { compgen -G "$work/.*.??????"; }
@@ -35,7 +36,7 @@ kill -"$signal" "$pid"
 wait "$pid"
 code=$?
 fail() { echo "FAIL: $*"; ls -la "$work"; exit 1; }
-[ "$(cat "$work/out.ply" "$work/idx.txt" | sha256sum)" = "$before" ] || fail "an existing output was changed"
+[ "$(cat "$work/out.ply" "$work/idx.txt" "$work/view.png" | sha256sum)" = "$before" ] || fail "an existing output was changed"
 temporaries=$(all_temporaries | wc -l)
 case $signal in
   KILL) expected=137 ;;    # killed: nothing can run
@@ -45,7 +46,7 @@ case $signal in
 esac
 [ "$code" -eq "$expected" ] || fail "exit code $code, expected $expected"
 if [ "$signal" = KILL ]; then
-  [ "$temporaries" -le 2 ] || fail "$temporaries temporary files left"
+  [ "$temporaries" -le 3 ] || fail "$temporaries temporary files left"
 else
   [ "$temporaries" -eq 0 ] || fail "a temporary file was left"
 fi
