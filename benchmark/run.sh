@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The benchmark's one command. Builds it (-O3 -DNDEBUG), runs every method on
 # every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
-# figures), then the sections "Coincident points" (bench_duplicates) and
-# "Scale" (bench_scale, 100k to 10M points, about 15 minutes) of RESULTS.md. With --quick: smaller inputs, a couple of minutes,
+# figures), then the sections "Coincident points" (bench_duplicates),
+# "Scale" (bench_scale, 100k to 10M points, about 15 minutes) and "Levels of
+# detail" (bench_lod, about 2 minutes) of RESULTS.md. With --quick: smaller inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.
 set -euo pipefail
@@ -18,7 +19,7 @@ command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (a
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
   -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=ON -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
-cmake --build build-benchmark --target run_benchmark bench_duplicates bench_scale entropy_simplify -j"$(nproc)"
+cmake --build build-benchmark --target run_benchmark bench_duplicates bench_scale bench_lod entropy_simplify -j"$(nproc)"
 mkdir -p "$out/results"
 rm -f "$out"/results/*.png "$out"/results/points/*.txt
 build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
@@ -30,5 +31,8 @@ build-benchmark/benchmark/bench_duplicates ${mode:+--smoke} --append "$out/RESUL
 build-benchmark/benchmark/bench_scale --data build-benchmark/cgal_data/data --work build-benchmark/scale \
   --program build-benchmark/examples/entropy_simplify --out "$out" \
   ${mode:+--sizes 100000,300000 --runs 1}
+# Levels of detail: printed as its section, the figures in results/lod.csv.
+build-benchmark/benchmark/bench_lod --data build-benchmark/cgal_data/data --out "$out/results" ${mode:+--smoke} \
+  >> "$out/RESULTS.md"
 (cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
 echo "benchmark/run.sh: wrote $out/RESULTS.md"
