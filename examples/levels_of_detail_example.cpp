@@ -30,21 +30,20 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // Both are written in the order of the range.
+  // The importance goes to a property of the points; the ranks, a
+  // permutation, come in the order of the range.
+  Point_set::Property_map<double> importance = points.add_property_map<double>("importance", 0.).first;
+  CGAL::compute_entropy_importance<CGAL::Parallel_if_available_tag>(points, 10, importance);
   std::vector<std::size_t> ranks;
-  std::vector<double> importance;
   CGAL::entropy_simplification_ranks<CGAL::Parallel_if_available_tag>(points, 10, std::back_inserter(ranks),
                                                                       CGAL::parameters::select_percentage(5.));
-  CGAL::compute_entropy_importance<CGAL::Parallel_if_available_tag>(points, 10, std::back_inserter(importance));
 
   Point_set::Property_map<unsigned int> rank_map = points.add_property_map<unsigned int>("rank", 0).first;
-  Point_set::Property_map<double> importance_map = points.add_property_map<double>("importance", 0.).first;
   std::vector<Point_set::Index> by_rank(points.size());
   std::size_t position = 0;
   for (Point_set::Index i : points)
   {
     put(rank_map, i, static_cast<unsigned int>(ranks[position]));
-    put(importance_map, i, importance[position]);
     by_rank[ranks[position]] = i;
     ++position;
   }

@@ -244,11 +244,10 @@ py::array_t<double> importance(const py::handle& points, long long k, const std:
                                const std::string& normals, const py::object& threads)
 {
   const Call_options c = call_options(py::none(), py::none(), k, mode, py::none(), normals, py::none(), threads);
-  const Rows rows = rows_of(points, "points");
+  Rows rows = rows_of(points, "points");
   return to_array(without_gil(c.threads, [&](const std::function<bool(double)>& callback) {
-    std::vector<double> values;
-    values.reserve(rows.rows.size());
-    if (!CGAL::compute_entropy_importance<Tag>(rows.rows, c.k, std::back_inserter(values),
+    std::vector<double> values(rows.rows.size());
+    if (!CGAL::compute_entropy_importance<Tag>(rows.rows, c.k, CGAL::make_property_map(values),
                                                CGAL::parameters::point_map(rows.map).callback(callback), c.options))
       values.clear();
     return values;

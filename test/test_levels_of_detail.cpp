@@ -30,6 +30,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ES = CGAL::Entropy_simplification;
@@ -304,6 +305,35 @@ TEST_CASE("Ranks: empty input, a stopping callback, bad input, Point_set_3", "[r
 // Importance
 // ----------------------------------------------------------------------------
 
+namespace {
+
+using Point_with_importance = std::pair<Point, double>;
+
+// The importance of each point, written into (point, importance) pairs, the
+// pairs set to NaN first; empty when the function returned false.
+template <typename Tag = CGAL::Sequential_tag, typename NP = CGAL::parameters::Default_named_parameters>
+std::vector<double> importance_of(const std::vector<Point>& points, unsigned int k, const ES::Options& options = {},
+                                  const NP& np = CGAL::parameters::default_values())
+{
+  std::vector<Point_with_importance> range;
+  for (const Point& p : points)
+    range.emplace_back(p, std::numeric_limits<double>::quiet_NaN());
+  if (!CGAL::compute_entropy_importance<Tag>(
+        range, k, CGAL::Second_of_pair_property_map<Point_with_importance>(),
+        np.point_map(CGAL::First_of_pair_property_map<Point_with_importance>()), options))
+  {
+    for (const Point_with_importance& r : range)
+      REQUIRE(std::isnan(r.second)); // nothing written
+    return {};
+  }
+  std::vector<double> importance;
+  for (const Point_with_importance& r : range)
+    importance.push_back(r.second);
+  return importance;
+}
+
+} // namespace
+
 TEST_CASE("Importance, default mode: the feature strength of the reference's field", "[importance][default][reference]")
 {
   test_parallel::require_tbb();
@@ -318,13 +348,9 @@ TEST_CASE("Importance, default mode: the feature strength of the reference's fie
       options.normal_estimation = method;
       const reference::Field field = reference::feature_field(cloud.points, k, options);
       REQUIRE(field.coarse_count >= k + 1);
-      std::vector<double> sequential, parallel;
-      REQUIRE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(cloud.points, k, std::back_inserter(sequential),
-                                                                     CGAL::parameters::default_values(), options));
-      REQUIRE(in_parallel([&] {
-        return CGAL::compute_entropy_importance<test_parallel::Parallel_tag>(
-          cloud.points, k, std::back_inserter(parallel), CGAL::parameters::default_values(), options);
-      }));
+      const std::vector<double> sequential = importance_of(cloud.points, k, options);
+      const std::vector<double> parallel =
+        in_parallel([&] { return importance_of<test_parallel::Parallel_tag>(cloud.points, k, options); });
       REQUIRE(sequential.size() == cloud.points.size());
       CHECK(parallel == sequential);
       for (std::size_t i = 0; i < cloud.points.size(); ++i)
@@ -347,16 +373,15 @@ TEST_CASE("Importance, paper mode: the entropy of Eq. 5 before any removal, as t
   const brute_force::State state =
     brute_force::compute_state(points, std::vector<bool>(points.size(), true), k, options,
                                ES::internal::reference_normal(options, points));
-  std::vector<double> importance;
-  REQUIRE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(cloud.points, k, std::back_inserter(importance),
-                                                                 CGAL::parameters::default_values(), options));
+  const std::vector<double> importance = importance_of(cloud.points, k, options);
   REQUIRE(importance.size() == points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     CHECK(std::abs(importance[i] - state.importance[i]) <= 1e-12);
   CHECK(*std::max_element(importance.begin(), importance.end()) <= std::log(double(k + 1)) + 1e-12);
 }
 
-TEST_CASE("Importance: copies take their first copy's value, a stopping callback and bad input",
+TEST_CASE("Importance: into a Point_set_3 property, copies take their first copy's value, a stopping callback and "
+          "bad input",
           "[importance][duplicates][bad input]")
 {
   const test_clouds::Cloud cloud = test_clouds::with_duplicates(300, 3);
@@ -366,26 +391,27 @@ TEST_CASE("Importance: copies take their first copy's value, a stopping callback
       distinct.push_back(p);
   for (const ES::Options& options : { ES::Options(), paper_mode() })
   {
-    std::vector<double> of_all, of_distinct;
-    REQUIRE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(cloud.points, 8, std::back_inserter(of_all),
-                                                                   CGAL::parameters::default_values(), options));
-    REQUIRE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(distinct, 8, std::back_inserter(of_distinct),
-                                                                   CGAL::parameters::default_values(), options));
+    const std::vector<double> of_all = importance_of(cloud.points, 8, options);
+    const std::vector<double> of_distinct = importance_of(distinct, 8, options);
     REQUIRE(of_all.size() == cloud.points.size());
     for (std::size_t i = 0; i < cloud.points.size(); ++i)
       CHECK(of_all[i] == of_distinct[std::size_t(std::find(distinct.begin(), distinct.end(), cloud.points[i]) -
                                                  distinct.begin())]);
 
-    std::vector<double> none;
-    CHECK_FALSE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(
-      cloud.points, 8, std::back_inserter(none), CGAL::parameters::callback([](double) { return false; }), options));
-    CHECK(none.empty());
-    CHECK_THROWS_AS(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(cloud.points, 1, std::back_inserter(none),
-                                                                           CGAL::parameters::default_values(),
-                                                                           options),
-                    std::invalid_argument);
+    CGAL::Point_set_3<Point> set;
+    for (const Point& p : cloud.points)
+      set.insert(p);
+    auto importance = set.add_property_map<double>("importance", -1.).first;
+    REQUIRE(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(set, 8, importance,
+                                                                   CGAL::parameters::default_values(), options));
+    std::size_t i = 0;
+    bool same = true;
+    for (auto index : set)
+      same = same && importance[index] == of_all[i++];
+    CHECK(same);
+
+    CHECK(importance_of(cloud.points, 8, options, CGAL::parameters::callback([](double) { return false; })).empty());
+    CHECK_THROWS_AS(importance_of(cloud.points, 1, options), std::invalid_argument);
   }
-  std::vector<double> none;
-  CHECK(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(std::vector<Point>(), 8, std::back_inserter(none)));
-  CHECK(none.empty());
+  CHECK(importance_of(std::vector<Point>(), 8).empty());
 }

@@ -191,11 +191,10 @@ template <typename ConcurrencyTag>
 std::vector<double> importance_of_rows(const Cloud& cloud, const Settings& s,
                                        const std::function<bool(double)>& callback)
 {
-  const std::vector<std::size_t> rows = all_rows<std::size_t>(cloud.size());
-  std::vector<double> importance;
-  importance.reserve(rows.size());
+  std::vector<std::size_t> rows = all_rows<std::size_t>(cloud.size());
+  std::vector<double> importance(rows.size());
   if (!CGAL::compute_entropy_importance<ConcurrencyTag>(
-        rows, s.k, std::back_inserter(importance),
+        rows, s.k, CGAL::make_property_map(importance),
         CGAL::parameters::point_map(point_map_of<std::size_t>(cloud)).callback(callback), s.options))
     throw std::logic_error("the progress bar stopped the importance");
   return importance;

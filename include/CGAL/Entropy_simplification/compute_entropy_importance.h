@@ -99,14 +99,18 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
    Possible values are `Sequential_tag`, `Parallel_tag`, and
    `Parallel_if_available_tag`. The result does not depend on it.
    \tparam PointRange is a model of `ConstRange`. The value type of its
-   iterator is the key type of the named parameter `point_map`.
-   \tparam OutputIterator an output iterator accepting `double`
+   iterator is the key type of the named parameter `point_map` and of
+   `ImportanceMap`.
+   \tparam ImportanceMap a model of `WritablePropertyMap` whose key type is
+   the value type of the iterator of `PointRange` and whose value type is
+   `double`, such as a `double` property map of a `CGAL::Point_set_3`, or
+   `CGAL::Second_of_pair_property_map` on a range of `std::pair<Point_3,
+   double>`
 
    \param points input point range
    \param k number of neighbours of each point, as for
    `CGAL::entropy_simplify_point_set()`
-   \param importance receives the importance of each point, in the order of
-   the range
+   \param importance_map receives the importance of each point
    \param np an optional sequence of \ref bgl_namedparameters "Named Parameters"
    among the ones listed below; any other is rejected at compile time
    \param options the package's options (`Entropy_simplification::Options`);
@@ -138,16 +142,18 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
 
    \return `true` when the importances were written; `false`, with nothing
    written, when the callback stopped the computation. An empty range writes
-   nothing and returns `true`.
+   nothing and returns `true`. The points are only read; the range is taken
+   by non-`const` reference so that the map can write into its elements, as
+   for `CGAL::pca_estimate_normals()`.
 
    \throw std::invalid_argument when a coordinate is not finite or exceeds
    1e150 in magnitude; when `k` is out of range or the range has fewer than
    `k + 1` distinct points (as for `CGAL::entropy_simplify_point_set()`); in
    `Mode::paper`, when `Options::reference_normal` is null or not finite.
 */
-template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
+template <typename ConcurrencyTag, typename PointRange, typename ImportanceMap,
           typename NamedParameters = parameters::Default_named_parameters>
-bool compute_entropy_importance(const PointRange& points, unsigned int k, OutputIterator importance,
+bool compute_entropy_importance(PointRange& points, unsigned int k, ImportanceMap importance_map,
                                 const NamedParameters& np = parameters::default_values(),
                                 const Entropy_simplification::Options& options = Entropy_simplification::Options())
 {
@@ -176,8 +182,9 @@ bool compute_entropy_importance(const PointRange& points, unsigned int k, Output
     of_input[distinct.input_position[d]] = of_distinct[d];
   for (std::size_t c = 0; c < distinct.copies.size(); ++c)
     of_input[distinct.copies[c]] = of_distinct[distinct.representative[c]];
-  for (double value : of_input)
-    *importance++ = value;
+  std::size_t position = 0;
+  for (auto it = points.begin(); it != points.end(); ++it)
+    put(importance_map, *it, of_input[position++]);
   return true;
 }
 
