@@ -98,7 +98,38 @@ Value choice(const char* option, const std::string& text, const std::vector<std:
   throw std::invalid_argument(std::string(option) + " must be " + names + ", got '" + text + "'");
 }
 
-Call_options call_options(const py::object& ratio, const py::object& count, long long k, const std::string& mode,
+std::string repr(const py::object& value) { return py::repr(value).cast<std::string>(); }
+
+// A keyword's value as a whole number (an int or a NumPy integer, not a
+// bool), or ValueError.
+long long whole_number(const py::object& value, const char* name)
+{
+  if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+    throw std::invalid_argument(std::string(name) + " must be a whole number, got " + repr(value));
+  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  const long long n = index ? PyLong_AsLongLong(index.ptr()) : -1;
+  if (!index || (n == -1 && PyErr_Occurred()))
+  {
+    PyErr_Clear();
+    throw std::invalid_argument(std::string(name) + " is out of range, got " + repr(value));
+  }
+  return n;
+}
+
+// A keyword's value as a number, or ValueError.
+double real_number(const py::object& value, const char* name)
+{
+  const bool number = !py::isinstance<py::bool_>(value) && PyNumber_Check(value.ptr());
+  const double x = number ? PyFloat_AsDouble(value.ptr()) : 0.;
+  if (!number || (x == -1. && PyErr_Occurred()))
+  {
+    PyErr_Clear();
+    throw std::invalid_argument(std::string(name) + " must be a number, got " + repr(value));
+  }
+  return x;
+}
+
+Call_options call_options(const py::object& ratio, const py::object& count, const py::object& k, const std::string& mode,
                           const py::object& feature_weight, const std::string& normals, const py::object& order,
                           const py::object& threads)
 {
@@ -107,20 +138,21 @@ Call_options call_options(const py::object& ratio, const py::object& count, long
     throw std::invalid_argument("give only one of ratio and count");
   if (!ratio.is_none())
   {
-    c.ratio = ratio.cast<double>();
+    c.ratio = real_number(ratio, "ratio");
     if (!(*c.ratio > 0. && *c.ratio <= 1.))
-      throw std::invalid_argument("ratio must lie in (0, 1], got " + py::repr(ratio).cast<std::string>());
+      throw std::invalid_argument("ratio must lie in (0, 1], got " + repr(ratio));
   }
   if (!count.is_none())
   {
-    const long long n = count.cast<long long>();
+    const long long n = whole_number(count, "count");
     if (n < 1)
       throw std::invalid_argument("count must be at least 1, got " + std::to_string(n));
     c.count = std::size_t(n);
   }
-  if (k < 0 || k > 1000000)
-    throw std::invalid_argument("k = " + std::to_string(k) + " is out of range");
-  c.k = unsigned(k);
+  const long long kk = whole_number(k, "k");
+  if (kk < 0 || kk > 1000000)
+    throw std::invalid_argument("k = " + std::to_string(kk) + " is out of range");
+  c.k = unsigned(kk);
   c.options.mode = choice<ES::Mode>("mode", mode, { { "default", ES::Mode::weighted_elimination },
                                                     { "paper", ES::Mode::paper } });
   c.options.normal_estimation = choice<ES::Normal_estimation>(
@@ -129,19 +161,19 @@ Call_options call_options(const py::object& ratio, const py::object& count, long
   {
     if (c.options.mode == ES::Mode::paper)
       throw std::invalid_argument("feature_weight applies to the default mode only");
-    c.options.feature_weight = feature_weight.cast<double>();
+    c.options.feature_weight = real_number(feature_weight, "feature_weight");
   }
   if (!order.is_none())
   {
     if (c.options.mode != ES::Mode::paper)
       throw std::invalid_argument("order applies to mode='paper' only");
     c.options.removal_order = choice<ES::Removal_order>(
-      "order", order.cast<std::string>(), { { "lowest", ES::Removal_order::lowest_entropy_first },
+      "order", py::str(order).cast<std::string>(), { { "lowest", ES::Removal_order::lowest_entropy_first },
                                             { "highest", ES::Removal_order::highest_entropy_first } });
   }
   if (!threads.is_none())
   {
-    const long long n = threads.cast<long long>();
+    const long long n = whole_number(threads, "threads");
     if (n < 1)
       throw std::invalid_argument("threads must be at least 1, got " + std::to_string(n));
     c.threads = std::size_t(n);
@@ -208,7 +240,7 @@ py::array_t<T> to_array(const std::vector<T>& values)
 }
 
 py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& ratio, const py::object& count,
-                                   long long k, const std::string& mode, const py::object& feature_weight,
+                                   const py::object& k, const std::string& mode, const py::object& feature_weight,
                                    const std::string& normals, const py::object& order, const py::object& threads)
 {
   const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
@@ -232,7 +264,7 @@ py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& r
 }
 
 py::array_t<std::int64_t> ranks(const py::handle& points, const py::object& ratio, const py::object& count,
-                                long long k, const std::string& mode, const py::object& feature_weight,
+                                const py::object& k, const std::string& mode, const py::object& feature_weight,
                                 const std::string& normals, const py::object& order, const py::object& threads)
 {
   const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
@@ -240,7 +272,7 @@ py::array_t<std::int64_t> ranks(const py::handle& points, const py::object& rati
   return to_array(std::vector<std::int64_t>(r.begin(), r.end()));
 }
 
-py::array_t<double> importance(const py::handle& points, long long k, const std::string& mode,
+py::array_t<double> importance(const py::handle& points, const py::object& k, const std::string& mode,
                                const std::string& normals, const py::object& threads)
 {
   const Call_options c = call_options(py::none(), py::none(), k, mode, py::none(), normals, py::none(), threads);

@@ -314,12 +314,15 @@ TEST_CASE("The importance in LAS: the records' bytes, then the attribute, declar
     const char* attribute = written.data() + *vlr + 54 + length - 192;
     CHECK(int(attribute[2]) == 10);
     CHECK(std::string(attribute + 4) == "importance");
-    // what follows the points (EVLRs) is the input's
+    // what follows the points (EVLRs) is the input's, and the header says where it starts
+    if (las.evlr_count > 0)
+      CHECK(es::load_little_endian<std::uint64_t>(written.data() + es::las_detail::evlr_start_at) ==
+            again.offset_to_points + rows.size() * again.record_length);
     CHECK(written.substr(again.offset_to_points + rows.size() * again.record_length) ==
           std::string(file.bytes().substr(las.offset_to_points + las.point_count * las.record_length)));
   }
   es::Input_file bad(cli_input("grid_overdeclared_extra_bytes.las"));
-  CHECK_THROWS_AS(es::check_room_for_attribute(es::read_las(bad.bytes())), es::Read_error);
+  CHECK_THROWS_AS(es::check_room_for_attribute(es::read_las(bad.bytes()), "importance"), es::Read_error);
 }
 
 TEST_CASE("The picture of --render: the input beside the result, by importance, a PNG that decodes",

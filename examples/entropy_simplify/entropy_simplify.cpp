@@ -136,7 +136,7 @@ int run(int argc, char** argv)
   timer.start();
   const Cloud cloud = reading(s.input, [&] { return read_cloud(input.bytes(), in); });
   if (s.importance && out == Format::las)
-    reading(s.input, [&] { return check_room_for_attribute(*cloud.las); });
+    reading(s.input, [&] { return check_room_for_attribute(*cloud.las, "importance"); });
 
   // one bar for both passes: the importance takes about a third of a run
   Progress_bar progress(!s.quiet);
@@ -167,12 +167,7 @@ int run(int argc, char** argv)
   if (picture)
     write_png(picture->sink(), render_side_by_side(cloud, selection.kept, importance));
   // all complete before any replaces its target
-  for (Safe_output* file : { &output, indices ? &*indices : nullptr, picture ? &*picture : nullptr })
-    if (file)
-      file->complete();
-  for (Safe_output* file : { &output, indices ? &*indices : nullptr, picture ? &*picture : nullptr })
-    if (file)
-      file->commit();
+  commit_together({ &output, indices ? &*indices : nullptr, picture ? &*picture : nullptr });
   timer.stop();
 
   const std::vector<std::size_t>& kept = selection.kept;

@@ -29,7 +29,8 @@ inline constexpr unsigned undocumented = 0, double_type = 10;
 
 // The number of bytes a descriptor declares: its options byte for
 // undocumented bytes, the size of its type otherwise (types 11 to 30, now
-// deprecated, are arrays of 2 and 3 of types 1 to 10); 0 when reserved.
+// deprecated, are arrays of 2 and 3 of types 1 to 10). Read_error for a
+// reserved type, whose size is unknown.
 inline std::size_t declared_size(const char* descriptor)
 {
   static const std::size_t sizes[11] = { 0, 1, 1, 2, 2, 4, 4, 8, 8, 4, 8 };
@@ -40,7 +41,15 @@ inline std::size_t declared_size(const char* descriptor)
     return sizes[type];
   if (type <= 30)
     return sizes[(type - 11) % 10 + 1] * ((type - 11) / 10 + 2);
-  return 0;
+  throw Read_error("its Extra Bytes VLR declares an attribute of the reserved data type " + std::to_string(type) +
+                   ", whose size is unknown: an attribute cannot be added after it");
+}
+
+// The name of a descriptor, up to its first null byte.
+inline std::string_view name_of(const char* descriptor)
+{
+  const std::string_view field(descriptor + name_at, 32);
+  return field.substr(0, field.find('\0'));
 }
 
 inline std::string descriptor(unsigned type, unsigned options, std::string_view name, std::string_view description)
@@ -68,6 +77,23 @@ inline std::optional<std::size_t> extra_bytes_vlr(const Las_file& las)
   return std::nullopt;
 }
 
+// Whether an EVLR holds the Extra Bytes record, which LAS 1.4 allows there;
+// read_las() checked that every EVLR lies within the file.
+inline bool has_extra_bytes_evlr(const Las_file& las)
+{
+  if (las.evlr_count == 0)
+    return false;
+  std::size_t at = std::size_t(las_detail::field<std::uint64_t>(las, las_detail::evlr_start_at));
+  for (std::size_t i = 0; i < las.evlr_count; ++i)
+  {
+    const std::string_view user = las.bytes.substr(at + 2, 16);
+    if (user.substr(0, user.find('\0')) == "LASF_Spec" && las_detail::field<std::uint16_t>(las, at + 18) == 4)
+      return true;
+    at += las_detail::evlr_header_size + std::size_t(las_detail::field<std::uint64_t>(las, at + 20));
+  }
+  return false;
+}
+
 inline std::size_t end_of_vlrs(const Las_file& las)
 {
   std::size_t at = las.header_size;
@@ -83,6 +109,9 @@ inline std::size_t end_of_vlrs(const Las_file& las)
 inline std::string descriptors_to_add(const Las_file& las, std::string_view name, std::string_view description)
 {
   const std::size_t extra = las.record_length - las_detail::base_record_sizes[las.point_format];
+  if (has_extra_bytes_evlr(las))
+    throw Read_error("its Extra Bytes record is an EVLR, after the points: an attribute is only added to an Extra "
+                     "Bytes VLR");
   std::size_t declared = 0;
   if (const std::optional<std::size_t> vlr = extra_bytes_vlr(las))
   {
@@ -91,32 +120,43 @@ inline std::string descriptors_to_add(const Las_file& las, std::string_view name
       throw Read_error("its Extra Bytes VLR holds " + las_detail::bytes_text(length) +
                        ", not a whole number of 192-byte descriptors: an attribute cannot be added after them");
     for (std::size_t d = 0; d < length; d += descriptor_size)
-      declared += declared_size(las.bytes.data() + *vlr + las_detail::vlr_header_size + d);
+    {
+      const char* existing = las.bytes.data() + *vlr + las_detail::vlr_header_size + d;
+      declared += declared_size(existing);
+      if (!name.empty() && name_of(existing) == name)
+        throw Read_error("its Extra Bytes VLR already declares an attribute '" + std::string(name) +
+                         "': write to PLY, or drop the attribute first");
+    }
   }
   if (declared > extra)
     throw Read_error("its Extra Bytes VLR declares " + las_detail::bytes_text(declared) + " per record, more than the " +
                      las_detail::bytes_text(extra) + " its records have beyond point format " +
                      std::to_string(las.point_format) + ": an attribute cannot be added after them");
   std::string added;
+  int unnamed = 0;
   for (std::size_t left = extra - declared; left > 0; left -= (std::min)(left, std::size_t(255)))
-    added += descriptor(undocumented, unsigned((std::min)(left, std::size_t(255))), "", "");
+    added += descriptor(undocumented, unsigned((std::min)(left, std::size_t(255))),
+                        "undeclared_bytes_" + std::to_string(++unnamed), "bytes the input declared no name for");
   return added + descriptor(double_type, 0, name, description);
 }
 
 } // namespace las_extra_bytes_detail
 
-// Throws Read_error when a double attribute cannot be added to `las`: its
-// Extra Bytes VLR is inconsistent, or a length would overflow its field.
-inline void check_room_for_attribute(const Las_file& las)
+// Throws Read_error when a double attribute `name` cannot be added to `las`:
+// its Extra Bytes record is inconsistent, already has `name`, or lies in an
+// EVLR, or a length or offset would overflow its field.
+inline void check_room_for_attribute(const Las_file& las, std::string_view name)
 {
   namespace d = las_extra_bytes_detail;
-  const std::size_t added = d::descriptors_to_add(las, "", "").size();
+  const std::size_t added = d::descriptors_to_add(las, name, "").size();
   const std::optional<std::size_t> vlr = d::extra_bytes_vlr(las);
   if (las.record_length + 8 > std::numeric_limits<std::uint16_t>::max() ||
-      (vlr && las_detail::field<std::uint16_t>(las, *vlr + 20) + added > std::numeric_limits<std::uint16_t>::max()) ||
-      las.offset_to_points + added + las_detail::vlr_header_size > std::numeric_limits<std::uint32_t>::max())
+      (vlr && las_detail::field<std::uint16_t>(las, *vlr + 20) + added > std::numeric_limits<std::uint16_t>::max()))
     throw Read_error("an attribute of 8 bytes would make its records or its Extra Bytes VLR longer than LAS "
                      "allows (65,535 bytes)");
+  if (las.offset_to_points + added + las_detail::vlr_header_size > std::numeric_limits<std::uint32_t>::max())
+    throw Read_error("an Extra Bytes descriptor would move its point data beyond the 4 GiB that the offset to "
+                     "point data (byte 96) can hold");
 }
 
 // write_las() with `value_of_row[row]` after the bytes of each record,
@@ -126,7 +166,7 @@ inline void write_las_with_attribute(Sink& out, const Las_file& las, const std::
                                      const std::vector<double>& value_of_row)
 {
   namespace d = las_extra_bytes_detail;
-  check_room_for_attribute(las);
+  check_room_for_attribute(las, name);
   las_detail::check_rows(las, rows);
   const std::string descriptors = d::descriptors_to_add(las, name, description);
   const std::optional<std::size_t> vlr = d::extra_bytes_vlr(las);

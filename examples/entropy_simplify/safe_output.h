@@ -4,6 +4,8 @@
 // the run (SIGINT, SIGTERM, SIGHUP) or a crash, the temporary file is removed
 // and an existing output is left untouched; after SIGKILL the target is
 // untouched and at most the hidden temporary file `.NAME.XXXXXX` remains.
+// A run with several outputs completes them all before it renames any, and
+// renames them together, which a stopping signal cannot split.
 
 #ifndef ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
 #define ENTROPY_SIMPLIFY_SAFE_OUTPUT_H
@@ -17,15 +19,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <pthread.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace entropy_simplify {
@@ -41,27 +49,51 @@ constexpr int interrupted_exit_code = 130;
 
 namespace safe_output_detail {
 
-// The temporary files the signal handler removes, one for each output of a
-// run (the points, the indices of --indices, the picture of --render): fixed
-// buffers, since a handler may not allocate.
+// The temporary files to remove when the run stops, one for each output of a
+// run (the points, the indices of --indices, the picture of --render), with
+// whether the outputs were committed. The thread that waits for the
+// stopping signals takes the mutex before it reads them, so that it never
+// sees a slot half written nor a group of renames half done. A crash handler
+// reads them without the mutex, which it cannot take: the flags are atomic,
+// and a slot's path is written before its flag is set.
 inline constexpr int pending_slots = 3;
 inline char pending_temporary[pending_slots][PATH_MAX];
-inline volatile std::sig_atomic_t has_pending_temporary[pending_slots] = {};
+inline std::atomic<bool> has_pending_temporary[pending_slots] = {};
+inline std::mutex pending_mutex;
+inline bool outputs_committed = false; // under pending_mutex
 
 inline void remove_pending_temporary()
 {
   for (int slot = 0; slot < pending_slots; ++slot)
-    if (has_pending_temporary[slot])
+    if (has_pending_temporary[slot].load())
       ::unlink(pending_temporary[slot]);
 }
 
 inline void say(const char* message) { [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, std::strlen(message)); }
 
-// SIGINT, SIGTERM and SIGHUP: a user or the system stops the run.
-inline void remove_temporary_and_exit(int)
+inline sigset_t stopping_signals()
 {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  sigaddset(&set, SIGHUP);
+  return set;
+}
+
+// The thread that handles SIGINT, SIGTERM and SIGHUP, which every other
+// thread blocks: in a thread of its own rather than in a handler, it takes
+// the mutex like the rest of the program.
+inline void wait_for_stopping_signal()
+{
+  const sigset_t set = stopping_signals();
+  int signal = 0;
+  while (sigwait(&set, &signal) != 0)
+    continue;
+  pending_mutex.lock(); // held until the process ends
   remove_pending_temporary();
-  say("entropy_simplify: interrupted; no output was written\n");
+  say(outputs_committed ? "entropy_simplify: interrupted after the output was written\n"
+                        : "entropy_simplify: interrupted; no output was written\n");
   ::_exit(interrupted_exit_code);
 }
 
@@ -82,49 +114,29 @@ inline void remove_temporary_and_fail(int signal)
   ::raise(signal);
 }
 
-// Blocks SIGINT, SIGTERM and SIGHUP for its lifetime, so that the handler
-// never sees a half-updated pending_temporary, nor a rename half done.
-class Signals_blocked
-{
-public:
-  Signals_blocked()
-  {
-    sigset_t set;
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    sigaddset(&set, SIGHUP);
-    sigprocmask(SIG_BLOCK, &set, &previous_);
-  }
-  ~Signals_blocked() { sigprocmask(SIG_SETMASK, &previous_, nullptr); }
-  Signals_blocked(const Signals_blocked&) = delete;
-  Signals_blocked& operator=(const Signals_blocked&) = delete;
-
-private:
-  sigset_t previous_;
-};
-
 inline std::string reason(int error) { return std::strerror(error); }
 
 } // namespace safe_output_detail
 
-// Makes SIGINT, SIGTERM and SIGHUP remove the pending temporary file and exit
-// with interrupted_exit_code, SIGBUS (an input that shrinks while mapped) and
-// crashes remove it too, and SIGPIPE harmless: a closed stderr makes writes
-// to it fail, not the run.
+// Makes SIGINT, SIGTERM and SIGHUP remove the pending temporary files and
+// exit with interrupted_exit_code, SIGBUS (an input that shrinks while
+// mapped) and crashes remove them too, and SIGPIPE harmless: a closed stderr
+// makes writes to it fail, not the run. Call it before any other thread
+// starts: the threads started after it (TBB's workers) inherit the blocked
+// stopping signals, which one thread of its own waits for.
 inline void remove_output_on_signals()
 {
-  struct sigaction action = {};
-  sigemptyset(&action.sa_mask);
-  action.sa_handler = safe_output_detail::remove_temporary_and_exit;
-  for (int signal : { SIGINT, SIGTERM, SIGHUP })
-    sigaction(signal, &action, nullptr);
+  const sigset_t stopping = safe_output_detail::stopping_signals();
+  pthread_sigmask(SIG_BLOCK, &stopping, nullptr);
+  std::thread(safe_output_detail::wait_for_stopping_signal).detach();
   // a stack overflow leaves no stack to handle it on: give the handler its own
   static char alternate_stack[1 << 16];
   stack_t stack = {};
   stack.ss_sp = alternate_stack;
   stack.ss_size = sizeof alternate_stack;
   sigaltstack(&stack, nullptr);
+  struct sigaction action = {};
+  sigemptyset(&action.sa_mask);
   action.sa_handler = safe_output_detail::remove_temporary_and_fail;
   action.sa_flags = SA_ONSTACK;
   for (int signal : { SIGBUS, SIGSEGV, SIGFPE, SIGILL, SIGABRT })
@@ -228,11 +240,10 @@ public:
   Sink& sink() { return *sink_; }
 
   // Writes out what the sink holds and syncs it to the disk, where a full
-  // disk shows: a run with two outputs completes both before it commits
-  // either, so that a failure leaves both targets untouched.
+  // disk shows, then closes the file.
   void complete()
   {
-    if (descriptor_ < 0)
+    if (completed_)
       return;
     sink_->flush();
     if (::fsync(descriptor_) != 0 || ::fchmod(descriptor_, mode_) != 0)
@@ -241,24 +252,17 @@ public:
     descriptor_ = -1;
     if (::close(descriptor) != 0)
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno));
+    completed_ = true;
   }
 
   // Completes the file, and renames it over the target, which until then is
   // untouched.
-  void commit()
-  {
-    complete();
-    {
-      safe_output_detail::Signals_blocked blocked;
-      if (::rename(temporary_.c_str(), target_.c_str()) != 0)
-        throw Output_error("cannot replace '" + path_ + "': " + safe_output_detail::reason(errno));
-      safe_output_detail::has_pending_temporary[slot_] = 0;
-      committed_ = true;
-    }
-    sync_folder();
-  }
+  void commit();
+
 
 private:
+  friend void commit_together(std::initializer_list<Safe_output*> files);
+
   static std::string folder_of(const std::string& path)
   {
     const std::size_t slash = path.rfind('/');
@@ -314,28 +318,46 @@ private:
     std::string pattern = folder + "/." + name + ".XXXXXX";
     if (pattern.size() >= PATH_MAX)
       throw Output_error("cannot write '" + path_ + "': the path is too long");
-    safe_output_detail::Signals_blocked blocked;
-    while (slot_ < safe_output_detail::pending_slots && safe_output_detail::has_pending_temporary[slot_])
+    std::lock_guard<std::mutex> lock(safe_output_detail::pending_mutex);
+    while (slot_ < safe_output_detail::pending_slots && safe_output_detail::has_pending_temporary[slot_].load())
       ++slot_;
     if (slot_ == safe_output_detail::pending_slots)
-      throw std::logic_error("more outputs at once than the signal handler can clean up");
+      throw std::logic_error("more outputs at once than the signal handlers can clean up");
     descriptor_ = ::mkstemp(pattern.data());
     if (descriptor_ < 0)
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(errno) +
                          " (creating a file in '" + folder + "')");
     temporary_ = pattern;
     std::memcpy(safe_output_detail::pending_temporary[slot_], pattern.c_str(), pattern.size() + 1);
-    safe_output_detail::has_pending_temporary[slot_] = 1;
-    sink_.reset(new File_sink(descriptor_, path_));
+    safe_output_detail::has_pending_temporary[slot_].store(true);
+    try
+    {
+      sink_.reset(new File_sink(descriptor_, path_));
+    }
+    catch (...)
+    {
+      ::close(descriptor_);
+      ::unlink(temporary_.c_str());
+      safe_output_detail::has_pending_temporary[slot_].store(false);
+      throw;
+    }
+  }
+
+  void rename_over_target()
+  {
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0)
+      throw Output_error("cannot replace '" + path_ + "': " + safe_output_detail::reason(errno));
+    safe_output_detail::has_pending_temporary[slot_].store(false);
+    committed_ = true;
   }
 
   void discard_temporary()
   {
     if (temporary_.empty())
       return;
-    safe_output_detail::Signals_blocked blocked;
+    std::lock_guard<std::mutex> lock(safe_output_detail::pending_mutex);
     ::unlink(temporary_.c_str());
-    safe_output_detail::has_pending_temporary[slot_] = 0;
+    safe_output_detail::has_pending_temporary[slot_].store(false);
   }
 
   // The rename is durable once the folder is synced; the file itself is
@@ -354,9 +376,32 @@ private:
   mode_t mode_;
   int descriptor_ = -1;
   int slot_ = 0; // in safe_output_detail::pending_temporary
-  bool committed_ = false;
+  bool completed_ = false, committed_ = false;
   std::unique_ptr<File_sink> sink_;
 };
+
+// Completes the files (null ones skipped), then renames each over its
+// target, which until then is untouched, the stopping signals held off until
+// all are renamed. A failed rename (the folder made read-only meanwhile)
+// stops there: the outputs before it are replaced, the others untouched.
+inline void commit_together(std::initializer_list<Safe_output*> files)
+{
+  for (Safe_output* file : files)
+    if (file)
+      file->complete();
+  {
+    std::lock_guard<std::mutex> lock(safe_output_detail::pending_mutex);
+    for (Safe_output* file : files)
+      if (file)
+        file->rename_over_target();
+    safe_output_detail::outputs_committed = true;
+  }
+  for (Safe_output* file : files)
+    if (file)
+      file->sync_folder();
+}
+
+inline void Safe_output::commit() { commit_together({ this }); }
 
 } // namespace entropy_simplify
 

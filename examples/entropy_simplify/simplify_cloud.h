@@ -148,6 +148,12 @@ struct Selection
 template <typename ConcurrencyTag>
 Selection select_ranked_rows(const Cloud& cloud, const Settings& s, const std::function<bool(double)>& callback)
 {
+  const std::size_t level = level_size(cloud.size(), s);
+  // a level asked for is refused where a run without ranks refuses it: in
+  // the paper's mode, below k + 1 points
+  if (s.ratio || s.count)
+    CGAL::Entropy_simplification::internal::check_simplification_arguments(cloud.size(), cloud.size(), s.k, level,
+                                                                           s.options);
   const std::vector<std::size_t> ranks =
     cloud.size() <= std::numeric_limits<std::uint32_t>::max()
       ? rank_rows<ConcurrencyTag, std::uint32_t>(cloud, s, callback)
@@ -156,7 +162,6 @@ Selection select_ranked_rows(const Cloud& cloud, const Settings& s, const std::f
   selection.by_rank.resize(ranks.size());
   for (std::size_t row = 0; row < ranks.size(); ++row)
     selection.by_rank[ranks[row]] = row;
-  const std::size_t level = level_size(cloud.size(), s);
   selection.kept.assign(selection.by_rank.begin(), selection.by_rank.begin() + std::ptrdiff_t(level));
   std::sort(selection.kept.begin(), selection.kept.end());
   if (!s.lod)

@@ -15,7 +15,8 @@ specifications and sharing no code with the program:
   strength), 0 everywhere when SURFACE is "flat" and not when it is
   "features"; in LAS, the Extra Bytes VLR declares it as
   the double 'importance' after descriptors covering the records' own extra
-  bytes, and the header's record length and offsets agree;
+  bytes, the header's record length, offset to points and VLR count account
+  for it, and the EVLRs follow the points, as the input's;
 - kept.txt is the first m lines of lod.txt, and kept equals direct byte for
   byte (--indices changes nothing else).
 Prints what it checked; exits 1 on the first difference."""
@@ -129,8 +130,19 @@ def main():
         descriptors = extra_bytes_descriptors(lod_data)
         if not descriptors or descriptors[-1][2] != 10 or descriptors[-1][4:36].split(b"\0")[0] != b"importance":
             fail("the Extra Bytes VLR does not end with the double 'importance'")
-        h = las_layout(source_data)
+        h, written = las_layout(source_data), las_layout(lod_data)
         own_extra = h["length"] - BASE_SIZES[h["format"]]
+        added = len(extra_bytes_descriptors(lod_data)) - len(extra_bytes_descriptors(source_data))
+        new_vlr = not extra_bytes_descriptors(source_data)
+        if written["length"] != h["length"] + 8 \
+                or written["offset"] != h["offset"] + 192 * added + (54 if new_vlr else 0) \
+                or written["vlrs"] != h["vlrs"] + (1 if new_vlr else 0):
+            fail("the header's record length, offset to points or VLR count do not account for the attribute")
+        if source_data[25] >= 4 and struct.unpack_from("<I", source_data, 243)[0]:
+            if struct.unpack_from("<Q", lod_data, 235)[0] != written["offset"] + n * written["length"]:
+                fail("the EVLR start is not the end of the LOD's points")
+            if lod_data[written["offset"] + n * written["length"]:] != source_data[h["offset"] + n * h["length"]:]:
+                fail("the EVLRs are not the input's")
         if sum(declared_size(d) for d in descriptors[:-1]) != own_extra:
             fail("the descriptors before 'importance' do not cover the records' own %d extra bytes" % own_extra)
         check_importance([struct.unpack("<d", r[-8:])[0] for r in lod], surface)

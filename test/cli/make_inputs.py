@@ -140,6 +140,11 @@ def main():
           las(points, extra=6, vlr_count=2, vlr=vlr(b"entropy_tests", 7, b"payload bytes") +
               vlr(b"LASF_Spec", 4, extra_bytes_descriptor(3, b"strength"))))
     write("duplicates.xyz", "1 2 3\n" * 200)
+    # an attribute 'importance' already declared; a reserved data type (40) of unknown size
+    write("grid_with_importance.las", las(points, extra=8, vlr_count=1, vlr=vlr(b"LASF_Spec", 4,
+                                                                                 extra_bytes_descriptor(10, b"importance"))))
+    write("grid_reserved_extra_bytes_type.las", las(points, extra=4, vlr_count=1,
+                                                    vlr=vlr(b"LASF_Spec", 4, extra_bytes_descriptor(40, b"unknown"))))
     # an Extra Bytes VLR declaring a double the records do not have
     write("grid_overdeclared_extra_bytes.las", las(points, vlr_count=1, vlr=vlr(b"LASF_Spec", 4,
                                                                                 extra_bytes_descriptor(10, b"ghost"))))

@@ -114,6 +114,7 @@ def test_any_layout_and_float32(kitten):
 
 def test_options_and_threads(kitten):
     expected = es.simplify(kitten, ratio=0.1)
+    np.testing.assert_array_equal(es.simplify(kitten, count=np.int64(521), k=np.int32(10)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=1), expected)
     jet = es.simplify(kitten, ratio=0.1, normals="jet", k=12, feature_weight=1.0)
     assert len(jet) == len(expected) and not np.array_equal(jet, expected)
@@ -149,6 +150,11 @@ def test_empty_input():
     (lambda p: es.simplify(p[:8], count=5), "needs at least k \\+ 1 distinct points"),
     (lambda p: es.simplify(np.where(np.arange(len(p))[:, None] == 7, np.nan, p), count=10),
      "point #7 has a coordinate that is not finite"),
+    (lambda p: es.simplify(p, ratio="a tenth"), "ratio must be a number, got 'a tenth'"),
+    (lambda p: es.simplify(p, count=2.5), "count must be a whole number, got 2.5"),
+    (lambda p: es.simplify(p, count=2 ** 70), "count is out of range"),
+    (lambda p: es.simplify(p, count=10, k="ten"), "k must be a whole number"),
+    (lambda p: es.simplify(p, count=10, threads=True), "threads must be a whole number"),
     (lambda p: es.report(p, np.array([0, len(p)])), "not an index of the"),
     (lambda p: es.report(p, np.array([], dtype=np.int64)), "the simplification is empty"),
 ])
