@@ -59,7 +59,7 @@ void simplify_small(const es::Cloud& cloud, bool paper_mode)
   try
   {
     const std::vector<std::size_t> kept =
-      es::simplify_cloud<CGAL::Sequential_tag>(cloud, settings, std::function<bool(double)>(), normals);
+      es::simplify_cloud<CGAL::Sequential_tag>(cloud, settings, std::function<bool(double)>(), normals).kept;
     if (kept.size() != *settings.count || normals.size() != kept.size())
       std::abort();
   }
