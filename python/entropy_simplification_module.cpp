@@ -250,11 +250,10 @@ py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& r
   const std::size_t n = rows.rows.size();
   const std::size_t kept = c.ratio ? ES::internal::kept_count_from_percentage(n, *c.ratio * 100.)
                                    : (std::min)(n, *c.count);
-  // as a direct call: the ranks alone would take any count
-  if (c.options.mode == ES::Mode::paper && n > 0 && kept < std::size_t(c.k) + 1)
-    throw std::invalid_argument("the paper's mode must keep at least k + 1 = " + std::to_string(c.k + 1) +
-                                " points so that every point keeps k neighbours; " + std::to_string(kept) +
-                                " were asked");
+  // refused where a direct call refuses it (in the paper's mode, fewer than
+  // k + 1 points): the ranks alone would take any count
+  if (n > 0)
+    ES::internal::check_simplification_arguments(n, n, c.k, kept, c.options);
   const std::vector<std::size_t> ranks = ranks_of(rows, c);
   std::vector<std::int64_t> by_rank(n);
   for (std::size_t i = 0; i < n; ++i)
