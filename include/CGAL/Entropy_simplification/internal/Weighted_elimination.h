@@ -81,7 +81,11 @@ class Weighted_elimination
 {
 public:
   Weighted_elimination(const Indexed_points& points, unsigned int k, const Options& options)
-    : m_points(points), m_k(k), m_options(options), m_present(points.size(), 1), m_count(points.size())
+    : m_points(points),
+      m_k(k),
+      m_options(options),
+      m_present(points.size(), 1),
+      m_count(points.size())
   {}
 
   // Computes the field from the k nearest neighbours of every point.
@@ -91,16 +95,24 @@ public:
   bool initialize(const Progress& progress)
   {
     std::vector<Index> knn;
-    return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn,
-                                                    [&](double f) { return progress(0.5 * f); }) &&
-           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, std::move(knn), m_field,
-                                                     [&](double f) { return progress(0.5 + 0.5 * f); });
+    if (!nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) ||
+        !compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, std::move(knn), m_field,
+                                                   [&](double f) { return progress(0.5 + 0.5 * f); }))
+      return false;
+    // listed once the field's memory is released
+    m_listed = all_indices(m_points.size());
+    return true;
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }
   // Makes the points of `present` the present ones, as many as before (the
   // relocation exchanges points).
-  void set_present(std::vector<char> present) { m_present = std::move(present); }
+  void set_present(std::vector<char> present)
+  {
+    m_present = std::move(present);
+    m_listed = all_indices(m_points.size());
+    list_present();
+  }
   // The normals of the points `subset`, as the field estimated them.
   template <typename ConcurrencyTag>
   std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const
@@ -129,16 +141,18 @@ public:
   }
 
 private:
+  // Drops the points no longer present from the list of present points.
+  void list_present()
+  {
+    m_listed.erase(std::remove_if(m_listed.begin(), m_listed.end(), [this](Index i) { return !is_present(i); }),
+                   m_listed.end());
+  }
+
   // A tree of the present points, with their largest scales recorded.
   template <typename ConcurrencyTag>
   Point_tree present_tree() const
   {
-    std::vector<Index> present;
-    present.reserve(m_count);
-    for (Index i = 0; i < Index(m_points.size()); ++i)
-      if (is_present(i))
-        present.push_back(i);
-    Point_tree tree(m_points, present.begin(), present.end(), ConcurrencyTag());
+    Point_tree tree(m_points, m_listed.begin(), m_listed.end(), ConcurrencyTag());
     tree.record_largest_scales(m_field.scale);
     return tree;
   }
@@ -222,20 +236,19 @@ private:
     return true;
   }
 
-  // The present points of each block of indices, in parallel.
+  // The present points of each block of the list, in parallel.
   template <typename ConcurrencyTag, typename Function>
   void for_each_present_block(const Function& f) const
   {
-    const std::size_t n = m_points.size();
     for_each_index<ConcurrencyTag>(
-      (n + key_block - 1) / key_block,
+      key_blocks(),
       [&](std::size_t b) {
-        for (Index i = Index(b * key_block); i < Index((std::min)(n, (b + 1) * key_block)); ++i)
-          if (is_present(i))
-            f(b, i);
+        for (std::size_t r = b * key_block; r < (std::min)(m_listed.size(), (b + 1) * key_block); ++r)
+          f(b, m_listed[r]);
       },
       [](std::size_t) { return true; });
   }
+  std::size_t key_blocks() const { return (m_listed.size() + key_block - 1) / key_block; }
 
   // Two keys, from a sample of the present points, between which the
   // `count`-th present point most likely falls; none on a side that the
@@ -243,9 +256,8 @@ private:
   std::pair<std::optional<Key>, std::optional<Key> > likely_bounds(std::size_t count) const
   {
     std::vector<Key> sample;
-    for (std::size_t i = 0; i < m_points.size(); i += sample_stride)
-      if (is_present(Index(i)))
-        sample.push_back(key(Index(i)));
+    for (std::size_t r = 0; r < m_listed.size(); r += sample_stride)
+      sample.push_back(key(m_listed[r]));
     const double rank = double(count) / double(m_count) * double(sample.size());
     const double margin = 4. * std::sqrt(double(sample.size())) + 8.;
     auto at_rank = [&](double r) -> std::optional<Key> {
@@ -267,7 +279,7 @@ private:
     const std::pair<std::optional<Key>, std::optional<Key> > bounds = likely_bounds(count);
     const std::optional<Key>& low = bounds.first;
     const std::optional<Key>& high = bounds.second;
-    const std::size_t blocks = (m_points.size() + key_block - 1) / key_block;
+    const std::size_t blocks = key_blocks();
     std::vector<std::size_t> before(blocks, 0);
     std::vector<std::vector<Key> > between(blocks);
     for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
@@ -302,7 +314,7 @@ private:
   std::pair<std::vector<Index>, Key> first_present(std::size_t count) const
   {
     const Key last = key_of_present<ConcurrencyTag>(count);
-    const std::size_t blocks = (m_points.size() + key_block - 1) / key_block;
+    const std::size_t blocks = key_blocks();
     std::vector<std::vector<Index> > listed(blocks);
     for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
       if (!(last < key(i)))
@@ -388,6 +400,7 @@ private:
       auto [candidates, threshold] = first_present<ConcurrencyTag>(m_count - stage.target);
       while (!candidates.empty())
         remove_local_firsts<ConcurrencyTag>(candidates, threshold, stage, removals);
+      list_present();
     }
     sort_by<ConcurrencyTag>(removals.begin(), removals.end(),
                             [](const Removal& a, const Removal& b) { return a.key < b.key; });
@@ -408,6 +421,10 @@ private:
   Elimination_field m_field;
   std::vector<char> m_present;
   std::size_t m_count;
+  // the present points in index order, listed after the initialisation, so
+  // that choosing each round's candidates reads only them; the points
+  // removed since are dropped between rounds
+  std::vector<Index> m_listed;
   static constexpr std::size_t gather_block = std::size_t(1) << 15;
   // the blocks of indices whose keys are read in parallel, and the stride
   // of the sample that bounds a threshold
