@@ -46,13 +46,27 @@ struct Timing_row
   bool skipped = false;
 };
 
+// How an input relates to the tuning of the default mode.
+enum class Input_role
+{
+  tuned,         // its results guided the mode's design and constants
+  held_out,      // set aside before the mode was first tuned, never used for it
+  held_out_anew, // named before the work on anisotropy (issue 12) began, never used for it
+};
+
+// What the tables append to an input's name.
+inline const char* role_mark(Input_role role)
+{
+  return role == Input_role::held_out ? " (held out)" : role == Input_role::held_out_anew ? " (held out anew)" : "";
+}
+
 struct Input_summary
 {
   std::string name, description;
   std::size_t size = 0, labelled = 0;
   double pca_seconds = 0., seconds = 0.;
   bool is_replica = false;
-  bool held_out = false; // never used to tune the default mode
+  Input_role role = Input_role::tuned;
   Quality original; // the metrics of the input itself (coverage 0)
 };
 

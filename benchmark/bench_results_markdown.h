@@ -195,7 +195,7 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
   md << "## Inputs\n\n| input | description | points | pca_estimate_normals (s) |\n|---|---|---:|---:|\n";
   for (const Input_summary& s : r.inputs)
     md << "| " << s.name << " | " << s.description << " | " << thousands(s.size) << " | " << fixed(s.pca_seconds, 3)
-       << (s.held_out ? " (held out)" : "") << " |\n";
+       << role_mark(s.role) << " |\n";
   md << "\n";
   write_targets(md, r);
   write_best_peer(md, r);
@@ -396,13 +396,18 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
   for (const char* chart : { "mean_distance", "hausdorff", "p99_distance", "point_to_plane", "uniformity" })
     md << "![" << chart << "](" << figures << "/chart_" << chart << ".png)\n\n";
 
-  if (const Input_summary* fandisk = find_input(r, "fandisk"))
+  // the mesh samples whose points near sharp edges are labelled (the
+  // replica's labels mark its ball)
+  for (const Input_summary& input : r.inputs)
   {
-    const double input_share = double(fandisk->labelled) / double(fandisk->size);
-    md << "### fandisk: points near sharp edges\n\nShare of the kept points within 0.5% of the diagonal of an edge "
+    if (input.is_replica || input.labelled == 0)
+      continue;
+    const double input_share = double(input.labelled) / double(input.size);
+    md << "### " << input.name << role_mark(input.role)
+       << ": points near sharp edges\n\nShare of the kept points within 0.5% of the diagonal of an edge "
           "sharper than 30 degrees, divided by the input's share ("
        << percent(input_share) << "). At a ratio p the ratio cannot exceed min(1 / p, 1 / input share).\n\n| method |";
-    const std::vector<double> ratios = ratios_of(r, "fandisk");
+    const std::vector<double> ratios = ratios_of(r, input.name);
     for (double ratio : ratios)
       md << ' ' << ratio << "% |";
     md << "\n|---|";
@@ -413,13 +418,15 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
     {
       md << "| " << m << " |";
       for (double ratio : ratios)
-        if (const Quality_row* q = find_row(r, "fandisk", m, ratio))
+        if (const Quality_row* q = find_row(r, input.name, m, ratio))
           md << ' ' << fixed(double(q->quality.labelled) / double(q->count) / input_share, 2) << " |";
         else
           md << " skipped |";
       md << "\n";
     }
-    md << "\n![sharp edges](" << figures << "/chart_fandisk_sharp_edges.png)\n\n";
+    md << "\n";
+    if (input.name == "fandisk")
+      md << "![sharp edges](" << figures << "/chart_fandisk_sharp_edges.png)\n\n";
   }
 
   // ---------------------------------------------------------------- speed
