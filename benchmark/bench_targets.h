@@ -78,9 +78,13 @@ inline int targets_table(std::ostream& md, const Report& r, const std::vector<co
         explained.push_back(cell + "Hausdorff distance " + fixed(hausdorff_ratio, 3) + " times grid's; without the "
                             "entropy term " + fixed(w->quality.max / grid->quality.max, 3) + ".");
       if (p2p_ratio > 1.05 && w)
+      {
+        const double without = w->quality.point_to_plane / p2p.first;
         explained.push_back(cell + "point-to-plane error " + fixed(p2p_ratio, 3) + " times " + p2p.second +
-                            "'s; without the entropy term " + fixed(w->quality.point_to_plane / p2p.first, 3) +
-                            ": the term helps, not enough here.");
+                            "'s; without the entropy term " + fixed(without, 3) +
+                            (without > p2p_ratio ? ": the term helps, not enough here."
+                                                 : ": the term makes it worse here."));
+      }
 
       std::string share = "";
       if (s->labelled > 0)
