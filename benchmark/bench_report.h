@@ -74,6 +74,9 @@ struct Report
 {
   std::vector<Input_summary> inputs;
   std::vector<Quality_row> quality;
+  // the default mode at other feature weights (bench_feature_sweep.h), apart
+  // so that no other table or chart lists them
+  std::vector<Quality_row> feature_sweep;
   std::vector<Timing_row> timing;
   bool quick = false;
   int repeats = 3;

@@ -9,7 +9,9 @@
 #define ENTROPY_SIMPLIFICATION_BENCH_RESULTS_MARKDOWN_H
 
 #include "bench_report.h"
+#include "bench_feature_sweep.h"
 #include "bench_targets.h"
+#include "bench_targets_ahead.h"
 
 namespace bench {
 
@@ -199,6 +201,8 @@ inline void write_results_markdown(const Report& r, const std::string& file, con
   md << "\n";
   write_targets(md, r);
   write_best_peer(md, r);
+  write_targets_ahead(md, r);
+  write_feature_sweep(md, r, figures);
 
   // ---------------------------------------------------------------- Experiment I
   std::vector<const Input_summary*> replicas;
@@ -561,6 +565,7 @@ inline void write_report(const Report& r, const std::string& results_dir, const 
 {
   write_csv(r, results_dir);
   write_charts(r, results_dir);
+  write_sweep_files(r, results_dir);
   for (const Input_summary& s : r.inputs)
     if (s.is_replica)
       write_pictures(r, results_dir, s.name, 10., true);

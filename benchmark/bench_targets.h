@@ -235,15 +235,31 @@ inline void targets_group(std::ostream& md, const Report& r, const std::vector<c
   md << misses << " target" << (misses == 1 ? "" : "s") << " missed.\n\n";
 }
 
+// The inputs where the default mode ran at 10%, by their role in its tuning.
+struct Inputs_by_role
+{
+  std::vector<const Input_summary*> tuned, held_out, held_out_anew;
+  bool empty() const { return tuned.empty() && held_out.empty() && held_out_anew.empty(); }
+};
+
+inline Inputs_by_role inputs_by_role(const Report& r)
+{
+  Inputs_by_role by_role;
+  for (const Input_summary& s : r.inputs)
+    if (find_row(r, s.name, "package default", 10.))
+      (s.role == Input_role::tuned       ? by_role.tuned
+       : s.role == Input_role::held_out ? by_role.held_out
+                                        : by_role.held_out_anew)
+        .push_back(&s);
+  return by_role;
+}
+
 // The section: the inputs the default mode was tuned on, then those held
 // out, then those held out anew.
 inline void write_targets(std::ostream& md, const Report& r)
 {
-  std::vector<const Input_summary*> tuned, held_out, held_out_anew;
-  for (const Input_summary& s : r.inputs)
-    if (find_row(r, s.name, "package default", 10.))
-      (s.role == Input_role::tuned ? tuned : s.role == Input_role::held_out ? held_out : held_out_anew).push_back(&s);
-  if (tuned.empty() && held_out.empty() && held_out_anew.empty())
+  const Inputs_by_role groups = inputs_by_role(r);
+  if (groups.empty())
     return;
   md << "## The default mode against its targets\n\n"
      << "`package default` (`Mode::weighted_elimination`, `feature_weight` 3, k = 10) at 10, 20 and 50% kept. "
@@ -251,11 +267,11 @@ inline void write_targets(std::ostream& md, const Report& r)
         "(named in brackets); WLOP's skipped cells leave grid and hierarchy. The last column is the same mode with "
         "`feature_weight = 0` (the entropy term switched off), as ratios to the same peers. The targets were set "
         "against CGAL's simplifiers; the next section compares with every peer built.\n\n";
-  targets_group(md, r, tuned, "### Inputs the mode was tuned on\n\n");
-  targets_group(md, r, held_out,
+  targets_group(md, r, groups.tuned, "### Inputs the mode was tuned on\n\n");
+  targets_group(md, r, groups.held_out,
                 "### Held-out inputs\n\nSet aside before tuning and never used for it: they test whether the "
                 "default generalises.\n\n");
-  targets_group(md, r, held_out_anew,
+  targets_group(md, r, groups.held_out_anew,
                 "### Inputs held out anew\n\nNamed before the work on anisotropy (issue 12) began, and never used "
                 "for it: the earlier held-out inputs had been read in every report since.\n\n");
 }

@@ -133,10 +133,18 @@ TEST_CASE("Feature field: the feature budget", "[feature field]")
   // than the budget of 0.45: the weight becomes 0.45 / 0.3 = 1.5
   CHECK(ESI::budgeted_feature_weight(3., 0.3, 1.) == near(1.5));
   CHECK(ESI::budgeted_feature_weight(3., 0.3, 1.) * 0.3 == near(0.45));
-  // 0.45 * 10 / 30 = 0.15
-  CHECK(ESI::budgeted_feature_weight(2., 30., 10.) == near(0.15));
-  // within the budget (3 * 0.1 = 0.3 <= 0.45), or without features, the weight stays
+  // the budget follows the weight: 0.45 * 2 / 3 = 0.3 at a weight of 2, and
+  // 0.3 * 10 / 30 = 0.1; 0.9 at a weight of 6, and 0.9 / 0.3 = 3, twice the
+  // weight that 3 becomes on the same area
+  CHECK(ESI::budgeted_feature_weight(2., 30., 10.) == near(0.1));
+  CHECK(ESI::budgeted_feature_weight(6., 0.3, 1.) == near(3.));
+  // so the weight scales by the same factor, 15% over the marked fraction of the area
+  for (double w : { 0.5, 1., 3., 4.5, 10. })
+    CHECK(ESI::budgeted_feature_weight(w, 0.6, 1.) == near(w * 0.15 / 0.6));
+  // within the budget (3 * 0.1 = 0.3 <= 0.45, 6 * 0.1 <= 0.9), or without
+  // features, the weight stays
   CHECK(ESI::budgeted_feature_weight(3., 0.1, 1.) == 3.);
+  CHECK(ESI::budgeted_feature_weight(6., 0.1, 1.) == 6.);
   CHECK(ESI::budgeted_feature_weight(3., 0., 1.) == 3.);
   CHECK(ESI::budgeted_feature_weight(0., 0.5, 1.) == 0.);
 }

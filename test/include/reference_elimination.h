@@ -273,11 +273,13 @@ inline std::vector<double> coarse_strength(const std::vector<Point>& points, con
 // The field of the elimination
 // ----------------------------------------------------------------------------
 
-// Features may take at most 45% more points than the flat regions would: the
-// weight w is lowered until w * (sum of area * strength) <= 0.45 * area.
+// Features may take at most 0.45 * w / 3 more points than the flat regions
+// would (45% at the default w = 3): the weight w is lowered until
+// w * (sum of area * strength) <= 0.45 * (w / 3) * area.
 inline double budgeted_weight(double feature_weight, double feature_area, double total_area)
 {
-  return feature_area > 0. ? (std::min)(feature_weight, 0.45 * total_area / feature_area) : feature_weight;
+  const double extra_points = 0.45 * (feature_weight / 3.);
+  return feature_area > 0. ? (std::min)(feature_weight, extra_points * total_area / feature_area) : feature_weight;
 }
 
 // The radius factor of a point: 1 / sqrt(1 + w s), so that the kept density

@@ -76,11 +76,15 @@ struct Options
   /*!
     `Mode::weighted_elimination` only: how much denser features are kept. The
     kept density grows by up to `1 + feature_weight` where the entropy of the
-    normals marks a feature. The weight is lowered where needed so that the
-    features take at most 45% more points than the flat regions would (on
-    noisy scans, a third of the area can have a high entropy). 0 switches the
-    entropy term off: plain weighted sample elimination. Must be finite and
-    non-negative.
+    normals marks a feature. Where more than 15% of the area, counted by
+    feature strength, is marked (on noisy scans, a third of the area can have
+    a high entropy), the weight is scaled down in proportion, so that the
+    features take at most `0.15 * feature_weight` more points than the flat
+    regions would: 45% at the default. A greater weight therefore always keeps
+    more on features, at a cost in mean distance that
+    `benchmark/RESULTS.md` measures (section "Feature emphasis against
+    coverage"). 0 switches the entropy term off: plain weighted sample
+    elimination. Must be finite and non-negative.
   */
   double feature_weight = 3.;
 

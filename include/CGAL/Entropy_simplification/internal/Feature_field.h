@@ -86,15 +86,20 @@ inline double feature_strength(double entropy, double noise_floor)
 constexpr std::size_t coarse_stride = 64;
 
 // The extra points the features may take, as a fraction of the points the
-// flat regions would have: the feature weight is lowered so that the sum of
-// `weight * strength` over the area stays below it. On noisy scans, where a
-// third of the area has high entropy, an unbounded weight thins everything
-// else (measured in the user manual).
-constexpr double feature_budget = 0.45;
+// flat regions would have: 45% at the default weight 3, and in proportion to
+// the weight, so that a greater weight always keeps more on features. The
+// weight is lowered so that the sum of `weight * strength` over the area
+// stays below it, that is, where more than 15% of the area, counted by
+// strength, is marked. On noisy scans, where a third of the area has high
+// entropy, an unbounded weight thins everything else (measured in the user
+// manual).
+constexpr double feature_budget_at_default_weight = 0.45;
 
 inline double budgeted_feature_weight(double feature_weight, double feature_area, double total_area)
 {
-  return feature_area > 0. ? (std::min)(feature_weight, feature_budget * total_area / feature_area) : feature_weight;
+  // (w / 3) is exactly 1 at the default weight, whose budget is then 0.45
+  const double budget = feature_budget_at_default_weight * (feature_weight / 3.);
+  return feature_area > 0. ? (std::min)(feature_weight, budget * total_area / feature_area) : feature_weight;
 }
 
 // The factor applied to the interaction radius of the elimination around a
