@@ -14,6 +14,7 @@
 #include "bench_targets_ahead.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <ostream>
 #include <sstream>
@@ -77,8 +78,7 @@ inline bool sweep_point(const Report& r, const Input_summary& s, double weight, 
 // point-to-plane error against the share, on the labelled inputs.
 inline void write_sweep_chart(const Report& r, const std::vector<const Input_summary*>& swept, const std::string& dir)
 {
-  std::ofstream data(dir + "/feature_sweep.dat");
-  std::ofstream gp(dir + "/feature_sweep.gp");
+  std::ostringstream data, gp;
   gp << "set terminal pngcairo noenhanced size 1500,600 font 'sans,10'\nset output 'chart_feature_sweep.png'\n"
      << "set multiplot layout 1,2 title 'the default mode at feature weights 0, 1, 2, 3 (default, circled), 4.5, 6 "
         "and 10: what the feature share costs'\nset grid\nset key outside bottom center horizontal\n"
@@ -110,6 +110,10 @@ inline void write_sweep_chart(const Report& r, const std::vector<const Input_sum
     }
     ++input;
   }
+  // no labelled input, no chart: a script from an earlier run must not draw stale data
+  std::remove((dir + "/feature_sweep.gp").c_str());
+  if (blocks.empty())
+    return;
   for (int panel = 0; panel < 2; ++panel)
   {
     const double bound = panel == 0 ? ahead_mean : ahead_point_to_plane;
@@ -129,6 +133,8 @@ inline void write_sweep_chart(const Report& r, const std::vector<const Input_sum
     gp << "\nunset arrow\nunset label\n";
   }
   gp << "unset multiplot\n";
+  std::ofstream(dir + "/feature_sweep.dat") << data.str();
+  std::ofstream(dir + "/feature_sweep.gp") << gp.str();
 }
 
 // Every row of the sweep, its metrics as measured.
@@ -200,7 +206,7 @@ inline void write_feature_sweep(std::ostream& md, const Report& r, const std::st
         }
         md << ' ' << fixed(p.mean, 3) << ", " << fixed(p.point_to_plane, 3) << ", " << fixed(p.hausdorff, 3);
         if (s->labelled > 0)
-          md << ", " << fixed(p.share, 2);
+          md << ", " << fixed(p.share, 3);
         md << " |";
       }
       md << "\n";

@@ -131,6 +131,12 @@ inline int targets_table(std::ostream& md, const Report& r, const std::vector<co
   return misses;
 }
 
+// A peer's name, marked when it could not reach the count (see the header).
+inline std::string peer_name(const Quality_row& peer)
+{
+  return peer.method + (peer.count < peer.target ? ", short" : "");
+}
+
 // The smallest value of a metric among every library peer that ran in the
 // cell (CGAL's, PCL's, Open3D's), and its row.
 template <typename Metric>
@@ -181,9 +187,8 @@ inline void write_best_peer(std::ostream& md, const Report& r)
         not_cgal[k] += best->family != "CGAL";
         wins[best->method].resize(metrics.size(), 0);
         ++wins[best->method][k];
-        const bool is_short = best->count < best->target;
-        any_short = any_short || is_short;
-        table << ' ' << fixed(ratio_to_best, 3) << " (" << best->method << (is_short ? ", short" : "") << ") |";
+        any_short = any_short || best->count < best->target;
+        table << ' ' << fixed(ratio_to_best, 3) << " (" << peer_name(*best) << ") |";
       }
       table << "\n";
     }

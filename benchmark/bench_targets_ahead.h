@@ -70,8 +70,8 @@ inline Ahead_count ahead_table(std::ostream& md, const Report& r, const std::vec
         count.shares_set += bound > 0.;
         count.share += bound > 0. && ratio_of_shares < bound;
       }
-      md << "| " << s->name << " | " << ratio << "% | " << checked(m, ahead_mean) << " (" << best_mean->method
-         << ") | " << checked(p, ahead_point_to_plane) << " (" << best_plane->method << ") | "
+      md << "| " << s->name << " | " << ratio << "% | " << checked(m, ahead_mean) << " (" << peer_name(*best_mean)
+         << ") | " << checked(p, ahead_point_to_plane) << " (" << peer_name(*best_plane) << ") | "
          << checked(h, ahead_hausdorff) << " | " << share << " |\n";
     }
   md << "\n";

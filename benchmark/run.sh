@@ -2,7 +2,7 @@
 # The benchmark's one command. Builds it (-O3 -DNDEBUG), runs every method on
 # every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
 # figures), then the sections "Coincident points" (bench_duplicates),
-# "Scale" (bench_scale, 100k to 10M points, about 15 minutes) and "Levels of
+# "Scale" (bench_scale, 100k to 10M points, about 7 to 15 minutes) and "Levels of
 # detail" (bench_lod, about 2 minutes) of RESULTS.md. With --quick: smaller inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.

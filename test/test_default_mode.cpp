@@ -187,7 +187,7 @@ TEST_CASE("Default mode: the removal order equals the reference's, sequentially 
 {
   test_parallel::require_tbb();
   for (const Setting& setting : { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 } })
-    for (double feature_weight : { 3., 0. })
+    for (double feature_weight : { 3., 6., 0. })
       for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
       {
         ES::Options options;

@@ -274,8 +274,8 @@ inline std::vector<double> coarse_strength(const std::vector<Point>& points, con
 // ----------------------------------------------------------------------------
 
 // Features may take at most 0.45 * w / 3 more points than the flat regions
-// would (45% at the default w = 3): the weight w is lowered until
-// w * (sum of area * strength) <= 0.45 * (w / 3) * area.
+// would (45% at the default w = 3): the requested weight w becomes the
+// largest w' <= w with w' * (sum of area * strength) <= 0.45 * (w / 3) * area.
 inline double budgeted_weight(double feature_weight, double feature_area, double total_area)
 {
   const double extra_points = 0.45 * (feature_weight / 3.);

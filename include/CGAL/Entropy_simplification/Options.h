@@ -80,8 +80,8 @@ struct Options
     feature strength, is marked (on noisy scans, a third of the area can have
     a high entropy), the weight is scaled down in proportion, so that the
     features take at most `0.15 * feature_weight` more points than the flat
-    regions would: 45% at the default. A greater weight therefore always keeps
-    more on features, at a cost in mean distance that
+    regions would: 45% at the default. A greater weight therefore always
+    raises the density aimed at on features, at a cost in mean distance that
     `benchmark/RESULTS.md` measures (section "Feature emphasis against
     coverage"). 0 switches the entropy term off: plain weighted sample
     elimination. Must be finite and non-negative.
