@@ -303,7 +303,7 @@ int main(int argc, char** argv)
   plans.push_back({ [&] { return mesh_sample("fandisk", data + "/meshes/fandisk.off", 200000 / scale, true); },
                     everywhere, { 10. }, true });
   plans.push_back({ [&] { return scan("b9_training", data + "/points_3/b9_training.ply"); }, everywhere, { 10. }, true });
-  // the feature weight sweep: the labelled tuned inputs, and two unlabelled
+  // the feature weight sweep runs on every tuned input (three of them labelled)
   for (Input_plan& plan : plans)
     plan.feature_sweep = true;
   // Held out: set aside before the default mode was tuned, never used for it.
@@ -327,7 +327,7 @@ int main(int argc, char** argv)
   {
     Input_plan plan{ anew[i], everywhere, {}, true };
     plan.role = Input_role::held_out_anew;
-    plan.feature_sweep = i < 3; // the labelled machined parts
+    plan.feature_sweep = i < 3; // the first three: the labelled machined parts
     plans.push_back(plan);
   }
   plans.push_back({ [&] { return mesh_sample("timing_1M", data + "/meshes/lion.off", 1000000 / scale, false); },
