@@ -279,15 +279,22 @@ private:
     }
   }
 
+  // The candidate moves up from the end of the list: the lists are short,
+  // and a linear walk costs less than a binary search's mispredicted branches.
   static void keep_if_better(const Neighbor& candidate, std::size_t count, std::vector<Neighbor>& best)
   {
-    if (best.size() == count)
+    std::size_t slot = best.size();
+    if (slot == count)
     {
       if (!(candidate < best.back()))
         return;
-      best.pop_back();
+      --slot;
     }
-    best.insert(std::upper_bound(best.begin(), best.end(), candidate), candidate);
+    else
+      best.push_back(candidate);
+    for (; slot > 0 && candidate < best[slot - 1]; --slot)
+      best[slot] = best[slot - 1];
+    best[slot] = candidate;
   }
 
   const Indexed_points& m_points;
