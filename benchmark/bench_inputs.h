@@ -9,9 +9,16 @@
 
 #include "bench_common.h"
 
+#include <CGAL/AABB_tree.h>
+#include <CGAL/version.h>
+// CGAL 6 renamed the AABB traits and primitives, deprecating the old names
+#if CGAL_VERSION_NR >= 1060000000
+#include <CGAL/AABB_segment_primitive_3.h>
+#include <CGAL/AABB_traits_3.h>
+#else
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#endif
 #include <CGAL/IO/read_points.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
@@ -112,7 +119,12 @@ inline std::vector<int> sharp_edge_labels(const Mesh& mesh, const std::vector<Po
     if (n1 * n2 < cos_limit)
       sharp.emplace_back(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)));
   }
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator> > >;
+  using Segment_iterator = std::vector<Segment>::const_iterator;
+#if CGAL_VERSION_NR >= 1060000000
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, CGAL::AABB_segment_primitive_3<Kernel, Segment_iterator> > >;
+#else
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment_primitive<Kernel, Segment_iterator> > >;
+#endif
   Tree tree(sharp.begin(), sharp.end());
   tree.accelerate_distance_queries();
   std::vector<int> labels;
