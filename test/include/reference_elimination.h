@@ -327,6 +327,12 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
     field.fine_strength.push_back(feature_strength(fine.entropy[p], field.floor));
     strength[p] = (std::max)(field.fine_strength[p], field.coarse_strength[p]);
   }
+  // No point counts for more than 1000 times the median area: a stray point
+  // far from the rest would otherwise make every radius, hence every
+  // neighbourhood, as wide as its distance.
+  const double largest_area = 1000. * median(area);
+  for (double& a : area)
+    a = (std::min)(a, largest_area);
   // Summed in the package's internal order, the Hilbert order, so that the
   // rounding of the sums, hence the budget, is the same.
   double total_area = 0., feature_area = 0.;

@@ -117,6 +117,24 @@ std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, 
   return area;
 }
 
+// The most a point's sampled area counts for, in medians. An isolated point,
+// such as a stray return far from a scan, samples a disc as wide as its
+// distance to the rest; counted in full, one such point widens every stage's
+// radius until each point reaches most others, and the run turns quadratic
+// in time and memory. The sparsest points of the benchmark's real scans
+// sample up to 812 medians (radar), which the cap leaves counted in full.
+constexpr double largest_area_in_medians = 1000.;
+
+// Lowers the areas above `largest_area_in_medians` medians to that bound.
+inline void cap_isolated_areas(std::vector<double>& area)
+{
+  if (area.empty())
+    return;
+  const double largest = largest_area_in_medians * median(area);
+  for (double& a : area)
+    a = (std::min)(a, largest);
+}
+
 // The factor of each point's interaction radius: the feature term, whose
 // weight the budget may lower, times the density term. Also sets the
 // effective area, the sampled area weighted by the density each scale asks
@@ -206,8 +224,9 @@ bool compute_elimination_field(const Indexed_points& points, unsigned int k, con
   std::vector<double> entropy;
   if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy, progress))
     return false;
-  const std::vector<double> area =
+  std::vector<double> area =
     sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
+  cap_isolated_areas(area);
   std::vector<Index>().swap(knn);
   const std::vector<double> strength =
     feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
