@@ -14,9 +14,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
+#include "thread_limit.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -27,6 +25,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace py = pybind11;
@@ -197,13 +196,7 @@ auto without_gil(const std::optional<std::size_t>& threads, const Compute& compu
   decltype(compute(callback)) result;
   {
     py::gil_scoped_release released;
-#ifdef CGAL_LINKED_WITH_TBB
-    std::unique_ptr<tbb::global_control> limit;
-    if (threads)
-      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *threads);
-#else
-    (void)threads;
-#endif
+    const entropy_simplify::Thread_limit limit(threads);
     result = compute(callback);
   }
   if (interrupted)
@@ -285,21 +278,44 @@ py::array_t<double> importance(const py::handle& points, const py::object& k, co
   }));
 }
 
+// The indices of `integers`, an array of integers of the signedness of
+// `Integer`, each below `n`.
+template <typename Integer>
+std::vector<std::size_t> indices_below(const py::array& integers, std::size_t n)
+{
+  const auto indices = py::array_t<Integer, py::array::c_style | py::array::forcecast>::ensure(integers);
+  std::vector<std::size_t> kept(std::size_t(indices.size()));
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    const Integer i = indices.data()[j];
+    if ((std::is_signed<Integer>::value && i < 0) || std::uint64_t(i) >= n)
+      throw std::invalid_argument("kept_idx holds " + std::to_string(i) + ", not an index of the " +
+                                  std::to_string(n) + " points");
+    kept[j] = std::size_t(i);
+  }
+  return kept;
+}
+
+// The kept indices: a one-dimensional array of integers, each an index of
+// the `n` points. Booleans, which would read as the indices 0 and 1, and
+// floats, which would be truncated, are refused.
+std::vector<std::size_t> kept_indices_of(const py::handle& object, std::size_t n)
+{
+  const py::array array = py::array::ensure(object);
+  if (!array || array.ndim() != 1)
+    throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
+  const char kind = array.dtype().kind();
+  if (array.size() > 0 && kind != 'i' && kind != 'u')
+    throw std::invalid_argument("kept_idx must hold integers, not values of dtype " +
+                                std::string(py::str(array.dtype())) +
+                                (kind == 'b' ? " (for a mask of kept points, pass numpy.flatnonzero(mask))" : ""));
+  return kind == 'u' ? indices_below<std::uint64_t>(array, n) : indices_below<std::int64_t>(array, n);
+}
+
 py::dict report(const py::handle& points, const py::handle& kept_indices)
 {
   const Rows rows = rows_of(points, "points");
-  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(kept_indices);
-  if (!indices || indices.ndim() != 1)
-    throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
-  std::vector<std::size_t> kept(std::size_t(indices.shape(0)));
-  for (std::size_t j = 0; j < kept.size(); ++j)
-  {
-    const std::int64_t i = indices.data()[j];
-    if (i < 0 || std::size_t(i) >= rows.rows.size())
-      throw std::invalid_argument("kept_idx holds " + std::to_string(i) + ", not an index of the " +
-                                  std::to_string(rows.rows.size()) + " points");
-    kept[j] = std::size_t(i);
-  }
+  const std::vector<std::size_t> kept = kept_indices_of(kept_indices, rows.rows.size());
   const ES::Quality_report r = without_gil(std::nullopt, [&](const std::function<bool(double)>&) {
     return CGAL::measure_simplification_quality<Tag>(rows.rows, kept, CGAL::parameters::point_map(rows.map),
                                                      CGAL::parameters::point_map(rows.map));

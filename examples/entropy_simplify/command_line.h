@@ -93,7 +93,8 @@ inline const char* examples_text()
          "  laszip -i scan.laz -o scan.las   or   pdal translate scan.laz scan.las\n"
          "\n"
          "Exit codes: 0 done; 1 failure (the output is left untouched); 2 usage error;\n"
-         "130 interrupted by SIGINT, SIGTERM or SIGHUP (the output is left untouched).";
+         "130 interrupted by SIGINT, SIGTERM, SIGHUP, SIGQUIT or another stopping signal\n"
+         "(the output is left untouched).";
 }
 
 namespace command_line_detail {
@@ -227,8 +228,8 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   CLI::Option* ascii_flag = app.add_flag("--ascii", ascii, "write PLY as text");
   CLI::Option* binary_flag = app.add_flag("--binary", binary, "write PLY as binary (little-endian)");
   ascii_flag->excludes(binary_flag);
-  app.add_option("--threads", threads, "use at most N worker threads (default: every hardware thread); the "
-                                     "result does not depend on N")->type_name("N");
+  app.add_option("--threads", threads, "use at most N worker threads (default, and at most: every hardware "
+                                     "thread); the result does not depend on N")->type_name("N");
   app.add_flag("--report", s.report, "print the quality of the result: the mean and greatest distance from "
                                      "the input points to the kept ones, and the point-to-plane error, over "
                                      "the input's bounding-box diagonal (printed even with --quiet)");

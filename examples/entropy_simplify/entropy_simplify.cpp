@@ -193,6 +193,7 @@ int run(int argc, char** argv)
 int main(int argc, char** argv)
 {
   using namespace entropy_simplify;
+  keep_standard_descriptors_taken();
   try
   {
     return run(argc, argv);

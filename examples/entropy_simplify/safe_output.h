@@ -1,7 +1,7 @@
 // Output that never loses a file: the result goes to a hidden temporary file
 // in the output's folder, every write is checked, and only a complete,
 // fsync'ed file is renamed over the target. On an error, a signal that stops
-// the run (SIGINT, SIGTERM, SIGHUP) or a crash, the temporary file is removed
+// the run (SIGINT, SIGTERM, SIGHUP, ...) or a crash, the temporary file is removed
 // and an existing output is left untouched; after SIGKILL the target is
 // untouched and at most the hidden temporary file `.NAME.XXXXXX` remains.
 // A run with several outputs completes them all before it renames any, and
@@ -44,7 +44,8 @@ struct Output_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// The exit code of a run stopped by SIGINT, SIGTERM or SIGHUP.
+// The exit code of a run stopped by SIGINT, SIGTERM, SIGHUP or another
+// stopping signal (see remove_output_on_signals).
 constexpr int interrupted_exit_code = 130;
 
 namespace safe_output_detail {
@@ -71,22 +72,29 @@ inline void remove_pending_temporary()
 
 inline void say(const char* message) { [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, message, std::strlen(message)); }
 
+// The signals whose default action ends the process and that a user or a
+// system sends on purpose: a keyboard's Ctrl-C and Ctrl-\, kill, a closed
+// terminal, timers, the user signals and the CPU-time limit. A signal the
+// program was started with ignored (nohup, a shell's background job) stays
+// ignored, as it would for any other program.
 inline sigset_t stopping_signals()
 {
   sigset_t set;
   sigemptyset(&set);
-  sigaddset(&set, SIGINT);
-  sigaddset(&set, SIGTERM);
-  sigaddset(&set, SIGHUP);
+  for (int signal : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM })
+  {
+    struct sigaction inherited = {};
+    if (sigaction(signal, nullptr, &inherited) == 0 && inherited.sa_handler != SIG_IGN)
+      sigaddset(&set, signal);
+  }
   return set;
 }
 
-// The thread that handles SIGINT, SIGTERM and SIGHUP, which every other
-// thread blocks: in a thread of its own rather than in a handler, it takes
-// the mutex like the rest of the program.
-inline void wait_for_stopping_signal()
+// The thread that handles the stopping signals, which every other thread
+// blocks: in a thread of its own rather than in a handler, it takes the
+// mutex like the rest of the program.
+inline void wait_for_stopping_signal(sigset_t set)
 {
-  const sigset_t set = stopping_signals();
   int signal = 0;
   while (sigwait(&set, &signal) != 0)
     continue;
@@ -118,17 +126,32 @@ inline std::string reason(int error) { return std::strerror(error); }
 
 } // namespace safe_output_detail
 
-// Makes SIGINT, SIGTERM and SIGHUP remove the pending temporary files and
-// exit with interrupted_exit_code, SIGBUS (an input that shrinks while
-// mapped) and crashes remove them too, and SIGPIPE harmless: a closed stderr
-// makes writes to it fail, not the run. Call it before any other thread
-// starts: the threads started after it (TBB's workers) inherit the blocked
-// stopping signals, which one thread of its own waits for.
+// Opens /dev/null on each standard descriptor the program was started with
+// closed (`2>&-`): a file the program opens later would otherwise take its
+// number, and what the program prints there, a note on stderr, would go
+// into that file, an output among them. Call it before opening any file.
+inline void keep_standard_descriptors_taken()
+{
+  for (int descriptor = STDIN_FILENO; descriptor <= STDERR_FILENO; ++descriptor)
+    if (::fcntl(descriptor, F_GETFD) == -1 && errno == EBADF)
+      // the lowest free number: this one, those below being open
+      ::open("/dev/null", descriptor == STDIN_FILENO ? O_RDONLY : O_WRONLY);
+}
+
+// Makes the stopping signals (SIGINT, SIGTERM, SIGHUP and the others of
+// stopping_signals, unless ignored from the start) remove the pending
+// temporary files and exit with interrupted_exit_code, SIGBUS (an input that
+// shrinks while mapped) and crashes remove them too, and SIGPIPE and SIGXFSZ
+// harmless: a closed stderr makes writes to it fail, not the run, and a file
+// size limit makes the write that crosses it fail with "File too large",
+// which removes the temporary file like any failed write. Call it before any
+// other thread starts: the threads started after it (TBB's workers) inherit
+// the blocked stopping signals, which one thread of its own waits for.
 inline void remove_output_on_signals()
 {
   const sigset_t stopping = safe_output_detail::stopping_signals();
   pthread_sigmask(SIG_BLOCK, &stopping, nullptr);
-  std::thread(safe_output_detail::wait_for_stopping_signal).detach();
+  std::thread(safe_output_detail::wait_for_stopping_signal, stopping).detach();
   // a stack overflow leaves no stack to handle it on: give the handler its own
   static char alternate_stack[1 << 16];
   stack_t stack = {};
@@ -142,6 +165,7 @@ inline void remove_output_on_signals()
   for (int signal : { SIGBUS, SIGSEGV, SIGFPE, SIGILL, SIGABRT })
     sigaction(signal, &action, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 // A sink writing to a file descriptor through a buffer, checking every

@@ -9,15 +9,19 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 #endif
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <optional>
 
 namespace entropy_simplify {
 
-// Holds the limit while it lives; no limit when `threads` is empty.
+// Holds the limit while it lives; no limit when `threads` is empty. A limit
+// above the threads the machine runs at once is that number: TBB reserves
+// memory for every thread a limit allows (1.3 GB for 10^7).
 class Thread_limit
 {
 public:
@@ -25,7 +29,9 @@ public:
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if (threads)
-      m_control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *threads);
+      m_control = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism,
+        (std::min)(*threads, std::size_t(tbb::info::default_concurrency())));
 #else
     (void)threads;
 #endif

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # interrupt.sh PROGRAM INPUT WORK SIGNAL PHASE: sends SIGNAL (INT, TERM, HUP,
-# BUS, SEGV or KILL) to a run over an existing output, while it computes or, PHASE
+# QUIT, BUS, SEGV or KILL) to a run over an existing output, while it computes or, PHASE
 # "writing", once it has written its result to the temporary file but not yet
 # renamed it (a stuck disk, through the seam ENTROPY_SIMPLIFY_TEST_STALL_AFTER_BYTES).
-# The existing output must be untouched. INT, TERM and HUP exit with 130, BUS
+# The existing output must be untouched. INT, TERM, HUP and QUIT exit with 130, BUS
 # (what an input that shrinks while mapped raises) with 1, SEGV (a crash) with
 # 139, each leaving no temporary file; after KILL, at most one hidden
 # temporary file remains. With a sixth argument "all", the run also writes
 # --indices and --render over existing files, which must be untouched too,
 # their temporary files removed with the output's.
 set -u
+# job control: without it, the shell starts background jobs with SIGINT and
+# SIGQUIT ignored, and the program keeps a signal ignored from the start
+set -m
 program=$1 input=$2 work=$3 signal=$4 phase=$5 outputs=${6:-}
 rm -rf "$work" && mkdir -p "$work"
 echo "an existing output" > "$work/out.ply"
@@ -42,7 +45,7 @@ case $signal in
   KILL) expected=137 ;;    # killed: nothing can run
   BUS) expected=1 ;;       # the mapped input failed: a failure, reported
   SEGV) expected=139 ;;    # a crash stays a crash, without its temporary file
-  *) expected=130 ;;       # INT, TERM, HUP: interrupted
+  *) expected=130 ;;       # INT, TERM, HUP, QUIT: interrupted
 esac
 [ "$code" -eq "$expected" ] || fail "exit code $code, expected $expected"
 if [ "$signal" = KILL ]; then

@@ -116,6 +116,11 @@ def test_options_and_threads(kitten):
     expected = es.simplify(kitten, ratio=0.1)
     np.testing.assert_array_equal(es.simplify(kitten, count=np.int64(521), k=np.int32(10)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=1), expected)
+    # more threads than the machine runs: as many as it runs (TBB would
+    # otherwise reserve memory for each, 1.3 GB for 10**7)
+    np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=2 ** 31 - 1), expected)
+    kept = es.simplify(kitten, ratio=0.1)
+    assert es.report(kitten, kept.astype(np.uint32)) == es.report(kitten, kept)
     jet = es.simplify(kitten, ratio=0.1, normals="jet", k=12, feature_weight=1.0)
     assert len(jet) == len(expected) and not np.array_equal(jet, expected)
     highest = es.simplify(kitten, ratio=0.1, mode="paper", order="highest")
@@ -157,6 +162,11 @@ def test_empty_input():
     (lambda p: es.simplify(p, count=10, threads=True), "threads must be a whole number"),
     (lambda p: es.report(p, np.array([0, len(p)])), "not an index of the"),
     (lambda p: es.report(p, np.array([], dtype=np.int64)), "the simplification is empty"),
+    (lambda p: es.report(p, np.arange(len(p)) % 10 == 0), r"kept_idx must hold integers, not values of dtype "
+     r"bool \(for a mask of kept points, pass numpy.flatnonzero\(mask\)\)"),
+    (lambda p: es.report(p, np.array([2.7, 5.2])), "kept_idx must hold integers, not values of dtype float64"),
+    (lambda p: es.report(p, np.array([2 ** 64 - 1], dtype=np.uint64)),
+     "kept_idx holds 18446744073709551615, not an index of the"),
 ])
 def test_bad_input_raises_value_error(kitten, call, message):
     with pytest.raises(ValueError, match=message):
