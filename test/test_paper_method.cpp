@@ -391,6 +391,32 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
       CHECK(std::is_permutation(scaled.begin(), scaled.end(), before.begin()));
     }
   }
+  SECTION("a cloud spanning less than 1e-150 is rejected before anything moves, in both modes; at 1e-140 it works")
+  {
+    for (const ES::Options& options : { ES::Options(), paper_mode() })
+    {
+      for (double scale : { 1e-140, 1e-160, 1e-200, 1e-300 })
+      {
+        std::vector<Point> scaled;
+        for (const Point& p : points)
+          scaled.push_back(Point(p.x() * scale, p.y() * scale, p.z() * scale));
+        const std::vector<Point> before = scaled;
+        if (scale > 1e-150)
+        {
+          const auto first_removed =
+            CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(scaled, 10, count(50), options);
+          CHECK(std::distance(scaled.begin(), first_removed) == 50);
+          CHECK(std::is_permutation(scaled.begin(), scaled.end(), before.begin()));
+        }
+        else
+        {
+          CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(scaled, 10, count(50), options),
+                            Catch::Contains("which is not 0 but below 1e-150"));
+          CHECK(scaled == before);
+        }
+      }
+    }
+  }
   SECTION("a null reference normal is an error")
   {
     std::vector<Point> copy = points;

@@ -147,7 +147,8 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
    for `CGAL::pca_estimate_normals()`.
 
    \throw std::invalid_argument when a coordinate is not finite or exceeds
-   1e150 in magnitude; when `k` is out of range or the range has fewer than
+   1e150 in magnitude, or the points span less than 1e-150 but more than 0;
+   when `k` is out of range or the range has fewer than
    `k + 1` distinct points (as for `CGAL::entropy_simplify_point_set()`); in
    `Mode::paper`, when `Options::reference_normal` is null or not finite.
 */

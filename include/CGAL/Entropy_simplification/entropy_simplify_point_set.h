@@ -221,7 +221,8 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
 
    \throw std::invalid_argument (in every build type, before any point is
    moved) when a coordinate is not finite or exceeds 1e150 in magnitude (squared
-   distances would overflow); when `k` is below 2 (below 5 with
+   distances would overflow); when the points span less than 1e-150 along
+   every axis but do not all coincide (squared distances would underflow); when `k` is below 2 (below 5 with
    jet fitting) or above 1000; when the range has fewer than `k + 1` distinct
    points;
    when `select_percentage` is outside `(0, 100]` or `number_of_output_points`

@@ -173,7 +173,8 @@ inline double distance_to_plane(const Working_point& p, const Local_plane& plane
 
    \throw std::invalid_argument when either range is empty, when the two
    together hold 2^32 - 1 points or more, or when a coordinate is not finite
-   or exceeds 1e150 in magnitude.
+   or exceeds 1e150 in magnitude, or when either range spans less than 1e-150
+   along every axis but more than 0.
 */
 template <typename ConcurrencyTag, typename InputRange, typename KeptRange,
           typename InputNamedParameters = parameters::Default_named_parameters,

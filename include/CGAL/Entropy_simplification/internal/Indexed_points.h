@@ -13,8 +13,10 @@
 #include <CGAL/spatial_sort.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -62,14 +64,22 @@ inline double squared_distance(const Working_point& a, const Working_point& b)
 // near 1e154; 1e150 leaves room for sums over 1000 neighbours.
 constexpr double largest_coordinate = 1e150;
 
+// The smallest extent, the largest side of the bounding box, the package
+// accepts for a cloud of more than one position. Below about 1e-154, the
+// squared distances between the points underflow to subnormal numbers and
+// then to 0, and every order the package defines would be meaningless.
+constexpr double smallest_extent = 1e-150;
+
 // The points of a range in input order, in double precision. Throws
 // std::invalid_argument on a coordinate that is not finite or exceeds
-// largest_coordinate: the Kd tree and every distance would be meaningless.
+// largest_coordinate, or on a nonzero extent below smallest_extent: the Kd
+// tree and every distance would be meaningless.
 template <typename Iterator, typename PointMap>
 std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, PointMap point_map)
 {
   auto in_range = [](double c) { return std::abs(c) <= largest_coordinate; }; // false for NaN
   std::vector<Working_point> points;
+  double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   for (Iterator it = first; it != beyond; ++it)
   {
     if (points.size() >= std::size_t((std::numeric_limits<Index>::max)()))
@@ -79,7 +89,22 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
     if (!(in_range(q.x()) && in_range(q.y()) && in_range(q.z())))
       throw std::invalid_argument("point #" + std::to_string(points.size()) +
                                   " has a coordinate that is not finite or exceeds 1e150 in magnitude");
+    for (int d = 0; d < 3; ++d)
+    {
+      low[d] = (std::min)(low[d], q.cartesian(d));
+      high[d] = (std::max)(high[d], q.cartesian(d));
+    }
     points.push_back(q);
+  }
+  double extent = 0.;
+  for (int d = 0; d < 3 && !points.empty(); ++d)
+    extent = (std::max)(extent, high[d] - low[d]);
+  if (extent > 0. && extent < smallest_extent)
+  {
+    char span[32];
+    std::snprintf(span, sizeof span, "%.3g", extent);
+    throw std::invalid_argument(std::string("the points span at most ") + span + " along any axis, which is not 0 "
+                                "but below 1e-150: the squared distances between them would underflow");
   }
   return points;
 }
