@@ -5,17 +5,17 @@
 //
 //   bench_lod --data DIR [--out DIR] [--smoke]
 //
-// 1. Cost: the whole order with its exact level at 1% against one direct
-//    call of entropy_simplify_point_set to 1%, in the same process, run
-//    after run (median of 3), with Parallel_tag on the machine's threads:
-//    the default mode on lion samples of 100k and 1M points, the paper's
-//    mode on 100k.
+// 1. Cost: the whole order, without a level and with its exact level at
+//    1%, against one direct call of entropy_simplify_point_set to 1%, in
+//    the same process, run after run (median of 3), with Parallel_tag on
+//    the machine's threads: the default mode on lion samples of 100k and 1M
+//    points, the paper's mode on 100k.
 // 2. Quality: the first m points by rank against a direct call to m, at 1,
-//    5, 10, 20 and 50%, with the level at 1%: the mean distance and the
-//    point-to-plane error (measure_simplification_quality) of each, on the
-//    benchmark's inputs.
+//    5, 10, 20 and 50%, without a level and with the level at 1%: the mean
+//    distance and the point-to-plane error (measure_simplification_quality)
+//    of each, on the benchmark's inputs.
 // Invariants checked on every run (the program fails otherwise): the ranks
-// are a permutation, and the level's prefix is the direct call's kept set.
+// are a permutation, and a level's prefix is the direct call's kept set.
 // Prints the tables of RESULTS.md's "Levels of detail" and writes lod.csv.
 
 #include "bench_common.h"
@@ -56,12 +56,17 @@ std::vector<Point> direct_call(const std::vector<Point>& points, std::size_t m, 
   return copy;
 }
 
-// The input positions by rank, checked to be a permutation.
+// The input positions by rank, checked to be a permutation: the level
+// `level`, or none when 0.
 std::vector<std::size_t> order_by_rank(const std::vector<Point>& points, std::size_t level, const ES::Options& options)
 {
   std::vector<std::size_t> ranks;
-  CGAL::entropy_simplification_ranks<CGAL::Parallel_tag>(
-    points, 10, std::back_inserter(ranks), CGAL::parameters::number_of_output_points(level), options);
+  if (level == 0)
+    CGAL::entropy_simplification_ranks<CGAL::Parallel_tag>(points, 10, std::back_inserter(ranks),
+                                                           CGAL::parameters::default_values(), options);
+  else
+    CGAL::entropy_simplification_ranks<CGAL::Parallel_tag>(
+      points, 10, std::back_inserter(ranks), CGAL::parameters::number_of_output_points(level), options);
   const std::size_t n = points.size();
   if (ranks.size() != n)
     throw std::logic_error("not one rank per point");
@@ -96,51 +101,63 @@ struct Cost
 {
   std::string mode, input;
   std::size_t n;
-  double direct, ranks;
+  double direct, without_level, with_level;
 };
 
 Cost measure_cost(const std::string& input, const std::vector<Point>& points, const ES::Options& options, int runs)
 {
   const std::size_t level = ES::internal::kept_count_from_percentage(points.size(), 1.);
-  std::vector<double> direct, ranks;
+  std::vector<double> direct, without_level, with_level;
   for (int r = 0; r < runs; ++r)
   {
     auto start = std::chrono::steady_clock::now();
     const std::vector<Point> kept = direct_call(points, level, options);
     direct.push_back(seconds_since(start));
     start = std::chrono::steady_clock::now();
+    order_by_rank(points, 0, options);
+    without_level.push_back(seconds_since(start));
+    start = std::chrono::steady_clock::now();
     const std::vector<std::size_t> order = order_by_rank(points, level, options);
-    ranks.push_back(seconds_since(start));
+    with_level.push_back(seconds_since(start));
     require_same_set(first_by_rank(points, order, level), kept);
   }
-  std::sort(direct.begin(), direct.end());
-  std::sort(ranks.begin(), ranks.end());
-  return { options.mode == ES::Mode::paper ? "paper" : "default", input, points.size(), direct[direct.size() / 2],
-           ranks[ranks.size() / 2] };
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  return { options.mode == ES::Mode::paper ? "paper" : "default", input, points.size(), median(direct),
+           median(without_level), median(with_level) };
 }
 
 struct Prefix_quality
 {
   std::string input;
+  bool with_level;
   double percentage, mean_ratio, plane_ratio;
 };
 
+// The prefixes' ratios at each percentage, without a level, then with the
+// level at 1%.
 std::vector<Prefix_quality> measure_quality(const bench::Cloud& cloud)
 {
   const std::vector<Point>& points = cloud.points;
   const std::size_t level = ES::internal::kept_count_from_percentage(points.size(), 1.);
-  const std::vector<std::size_t> order = order_by_rank(points, level, ES::Options());
+  const std::vector<std::size_t> orders[2] = { order_by_rank(points, 0, ES::Options()),
+                                               order_by_rank(points, level, ES::Options()) };
   std::vector<Prefix_quality> rows;
-  for (double percentage : { 1., 5., 10., 20., 50. })
-  {
-    const std::size_t m = ES::internal::kept_count_from_percentage(points.size(), percentage);
-    const std::vector<Point> direct = direct_call(points, m, ES::Options()), prefix = first_by_rank(points, order, m);
-    if (m == level)
-      require_same_set(prefix, direct);
-    const ES::Quality_report d = CGAL::measure_simplification_quality<CGAL::Parallel_tag>(points, direct);
-    const ES::Quality_report p = CGAL::measure_simplification_quality<CGAL::Parallel_tag>(points, prefix);
-    rows.push_back({ cloud.name, percentage, p.mean_distance / d.mean_distance, p.point_to_plane / d.point_to_plane });
-  }
+  for (int with_level = 0; with_level < 2; ++with_level)
+    for (double percentage : { 1., 5., 10., 20., 50. })
+    {
+      const std::size_t m = ES::internal::kept_count_from_percentage(points.size(), percentage);
+      const std::vector<Point> direct = direct_call(points, m, ES::Options()),
+                               prefix = first_by_rank(points, orders[with_level], m);
+      if (with_level && m == level)
+        require_same_set(prefix, direct);
+      const ES::Quality_report d = CGAL::measure_simplification_quality<CGAL::Parallel_tag>(points, direct);
+      const ES::Quality_report p = CGAL::measure_simplification_quality<CGAL::Parallel_tag>(points, prefix);
+      rows.push_back({ cloud.name, with_level == 1, percentage, p.mean_distance / d.mean_distance,
+                       p.point_to_plane / d.point_to_plane });
+    }
   return rows;
 }
 
@@ -194,42 +211,49 @@ int main(int argc, char** argv)
         quality.push_back(q);
 
     std::ofstream csv(out + "/lod.csv");
-    csv << "table,mode,input,points,percentage,direct_s,ranks_s,ratio\n";
+    csv << "table,mode,input,points,level,percentage,direct_s,ranks_s,ratio\n";
     std::printf("## Levels of detail\n\nProduced by `bench_lod --data DIR --out DIR`%s (`bash benchmark/run.sh` "
                 "runs it after \"Scale\"); the figures are also in `results/lod.csv`.\n\nMachine: %s.\n\n"
-                "### Cost of the whole order\n\n`CGAL::entropy_simplification_ranks(points, 10, ranks, "
-                "number_of_output_points(L))` against one `CGAL::entropy_simplify_point_set(points, 10, "
-                "number_of_output_points(L))`, L = 1%% of the points, `Parallel_tag` on the machine's threads, "
-                "run after run in one process (median of %d), on `meshes/lion.off` sampled uniformly in area "
-                "(seed 2018). Issue 11's target: at most 1.1x.\n\n"
-                "| mode | input | points | direct call to 1%% | whole order, level 1%% | ratio |\n"
-                "|---|---|---:|---:|---:|---:|\n",
+                "### Cost of the whole order\n\n`CGAL::entropy_simplification_ranks(points, 10, ranks)`, "
+                "without a level, and with `number_of_output_points(L)`, against one "
+                "`CGAL::entropy_simplify_point_set(points, 10, number_of_output_points(L))`, L = 1%% of the "
+                "points, `Parallel_tag` on the machine's threads, run after run in one process (median of %d), on "
+                "`meshes/lion.off` sampled uniformly in area (seed 2018). Issue 11's target: at most 1.1x.\n\n"
+                "| mode | input | points | direct call to 1%% | whole order, no level | ratio | whole order, "
+                "level 1%% | ratio |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
                 smoke ? " --smoke" : "", bench::machine_description().c_str(), runs);
     for (const Cost& c : costs)
     {
-      std::printf("| %s | %s | %zu | %.3f s | %.3f s | %.2f |\n", c.mode.c_str(), c.input.c_str(), c.n, c.direct,
-                  c.ranks, c.ranks / c.direct);
-      csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1," << c.direct << "," << c.ranks << ","
-          << c.ranks / c.direct << "\n";
+      std::printf("| %s | %s | %zu | %.3f s | %.3f s | %.2f | %.3f s | %.2f |\n", c.mode.c_str(), c.input.c_str(),
+                  c.n, c.direct, c.without_level, c.without_level / c.direct, c.with_level,
+                  c.with_level / c.direct);
+      csv << "cost," << c.mode << "," << c.input << "," << c.n << ",none,1," << c.direct << "," << c.without_level
+          << "," << c.without_level / c.direct << "\n";
+      csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1,1," << c.direct << "," << c.with_level << ","
+          << c.with_level / c.direct << "\n";
     }
-    std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, the level at 1%%, "
-                "against `CGAL::entropy_simplify_point_set` asking for m, in the default mode: the ratio of "
-                "their mean distance and of their point-to-plane error (`CGAL::measure_simplification_quality`). "
-                "At 1%%, the level, the prefix is the direct call's result. lion (457,124 points), fandisk "
+    std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, without a level (every "
+                "level boundary relocated) and with the level at 1%%, against `CGAL::entropy_simplify_point_set` "
+                "asking for m, in the default mode: the ratio of their mean distance and of their point-to-plane "
+                "error (`CGAL::measure_simplification_quality`). With the level at 1%%, the prefix at 1%% is the "
+                "direct call's result, and the longer ones are not relocated. lion (457,124 points), fandisk "
                 "(200,000) and b9_training were tuned on, hippo1 and radar held out (see [Inputs](#inputs)). "
                 "Issue 11's target: at most 1.05 at every percentage.\n\n"
-                "| input | ratio | 1%% | 5%% | 10%% | 20%% | 50%% |\n|---|---|---:|---:|---:|---:|---:|\n");
+                "| input | level | ratio | 1%% | 5%% | 10%% | 20%% | 50%% |\n"
+                "|---|---|---|---:|---:|---:|---:|---:|\n");
     for (std::size_t i = 0; i < quality.size(); i += 5)
       for (int which = 0; which < 2; ++which)
       {
-        std::printf("| %s | %s |", which == 0 ? quality[i].input.c_str() : "",
+        const bool first_of_input = which == 0 && !quality[i].with_level;
+        std::printf("| %s | %s | %s |", first_of_input ? quality[i].input.c_str() : "",
+                    which == 0 ? (quality[i].with_level ? "1%" : "none") : "",
                     which == 0 ? "mean distance" : "point-to-plane");
         for (std::size_t j = i; j < i + 5; ++j)
         {
           const double r = which == 0 ? quality[j].mean_ratio : quality[j].plane_ratio;
           std::printf(" %.3f |", r);
           csv << "quality," << (which == 0 ? "mean_distance" : "point_to_plane") << "," << quality[j].input << ",,"
-              << quality[j].percentage << ",,," << r << "\n";
+              << (quality[j].with_level ? "1" : "none") << "," << quality[j].percentage << ",,," << r << "\n";
         }
         std::printf("\n");
       }

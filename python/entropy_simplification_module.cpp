@@ -355,7 +355,8 @@ PYBIND11_MODULE(entropy_simplification, m)
         py::arg("threads") = py::none(),
         (std::string("ranks(points, *, ratio=None, count=None, ...) -> int64 array: the rank of each point, 0 "
                      "kept longest; the points of rank below m are a simplification to m points. In the default "
-                     "mode, the level of ratio or count (one point if neither) is exactly simplify()'s result.\n") +
+                     "mode, the level of ratio or count is exactly simplify()'s result, and the longer prefixes are "
+                     "not relocated; without one, the prefixes at 50, 20, 10, 5, 2, 1, 0.5, ...% are.\n") +
          options_doc)
           .c_str());
   m.def("importance", &importance, py::arg("points"), py::kw_only(), py::arg("k") = 10,

@@ -167,8 +167,9 @@ TEST_CASE("Ranks, default mode: equal the reference's, sequentially and in paral
       CHECK(ranks_of(cloud.points, k, np) == expected);
       CHECK(in_parallel([&] { return ranks_of<test_parallel::Parallel_tag>(cloud.points, k, np); }) == expected);
     }
-    // one point by default
-    CHECK(ranks_of(cloud.points, k) == ranks_of(cloud.points, k, CGAL::parameters::number_of_output_points(1)));
+    // all the points by default
+    CHECK(ranks_of(cloud.points, k) ==
+          ranks_of(cloud.points, k, CGAL::parameters::number_of_output_points(cloud.points.size())));
   }
 }
 
@@ -194,11 +195,12 @@ TEST_CASE("Ranks, default mode: the level is the direct call's result, the longe
   }
 }
 
-// The issue asks for 1.05x at 1, 5, 10, 20 and 50%; the prefixes away from
-// the level miss it, as the manual reports: the level is relocated, the
-// other prefixes are not. Measured with the level at 1% (ratios of the mean
-// distance, then of the point-to-plane error): up to 1.12 and 1.06 on
-// b9_training, 1.22 and 1.02 on radar. The bound keeps those from growing.
+// The issue asks for 1.05x at 1, 5, 10, 20 and 50%. Without a level, every
+// level boundary is relocated; measured (ratios of the mean distance, then
+// of the point-to-plane error): b9_training 1.088 and 1.014 at 1%, 1.049
+// and 1.052 at 5%, at most 1.042 and 1.020 above; radar at most 1.047 and
+// 1.020. The bounds hold 1.05 for the mean distance above 1%, and keep the
+// misses (1% and b9_training's point-to-plane at 5%) from growing.
 TEST_CASE("Ranks, default mode: prefixes at 1 to 50% against direct calls on two real scans",
           "[ranks][default][real data][quality]")
 {
@@ -206,9 +208,8 @@ TEST_CASE("Ranks, default mode: prefixes at 1 to 50% against direct calls on two
   for (const std::string name : { "points_3/b9_training.ply", "points_3/radar.xyz" })
   {
     const std::vector<Point> points = read_scan(name);
-    const std::vector<std::size_t> ranks = in_parallel([&] {
-      return ranks_of<test_parallel::Parallel_tag>(points, 10, CGAL::parameters::select_percentage(1.));
-    });
+    const std::vector<std::size_t> ranks =
+      in_parallel([&] { return ranks_of<test_parallel::Parallel_tag>(points, 10); });
     std::vector<std::size_t> by_rank(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
       by_rank[ranks[i]] = i;
@@ -228,10 +229,8 @@ TEST_CASE("Ranks, default mode: prefixes at 1 to 50% against direct calls on two
       const double plane_ratio = of_prefix.point_to_plane / of_direct.point_to_plane;
       INFO(name << ", " << percentage << "%: mean distance " << mean_ratio << "x, point-to-plane " << plane_ratio
                 << "x the direct call's");
-      CHECK(mean_ratio <= 1.3);
-      CHECK(plane_ratio <= 1.1);
-      if (percentage == 1.)
-        CHECK(mean_ratio == 1.);
+      CHECK(mean_ratio <= (percentage == 1. ? 1.1 : 1.05));
+      CHECK(plane_ratio <= 1.06);
     }
   }
 }

@@ -205,7 +205,8 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   app.add_flag("--lod", s.lod, "write every point, ordered by rank, so that any first m points are a "
                                "simplification to m points; PLY gets a 'scalar_rank' property (CloudCompare's "
                                "scalar field 'rank'). --ratio or --count gives the level whose points are "
-                               "exactly those a run without --lod keeps (default: one point)");
+                               "exactly those a run without --lod keeps, the longer prefixes unrelocated (default: no level, and the "
+                               "prefixes at 50, 20, 10, 5, 2, 1, 0.5, ...% relocated)");
   app.add_flag("--importance", s.importance, "add each point's importance, the value its mode orders by, "
                                              "computed on the input: a PLY property 'scalar_importance' (double; "
                                              "CloudCompare's scalar field 'importance'), or a LAS extra-bytes "

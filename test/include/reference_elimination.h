@@ -362,14 +362,20 @@ struct Stage
   double limit;  // Yuksel's weight limiting
 };
 
-// Each stage halves the count, the last one reaching the target.
-inline Stage stage_from(std::size_t present, std::size_t target, double effective_area)
+// The stage from `present` points down to `stage_target`.
+inline Stage stage_to(std::size_t present, std::size_t stage_target, double effective_area)
 {
   Stage stage;
-  stage.target = (std::max)(target, (present + 1) / 2);
+  stage.target = stage_target;
   stage.radius = std::sqrt(effective_area / (2. * std::sqrt(3.) * double(stage.target)));
   stage.limit = stage.radius * 0.65 * (1. - std::pow(double(stage.target) / double(present), 1.5));
   return stage;
+}
+
+// Each stage halves the count, the last one reaching the target.
+inline Stage stage_from(std::size_t present, std::size_t target, double effective_area)
+{
+  return stage_to(present, (std::max)(target, (present + 1) / 2), effective_area);
 }
 
 // (1 - d / 2r s)^8 within 2 r s, s the mean of the two scales, d not below
@@ -524,19 +530,136 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   return removed;
 }
 
+// ----------------------------------------------------------------------------
+// The ranks of the default mode
+// ----------------------------------------------------------------------------
+
+// The level boundaries of n points: 50, 20, 10, 5, 2, 1, 0.5, ...% of them,
+// rounded up, from the largest.
+inline std::vector<std::size_t> level_boundaries(std::size_t n)
+{
+  std::vector<std::size_t> boundaries;
+  for (double denominator = 10.; denominator <= 10. * double(n); denominator *= 10.)
+    for (double numerator : { 5., 2., 1. })
+      boundaries.push_back(std::size_t(std::ceil(double(n) * numerator / denominator - 1e-9)));
+  return boundaries;
+}
+
+// Where a stage of the ranking below its level ends, from `present` points:
+// the first boundary below `present`, or 1.
+inline std::size_t stage_end(std::size_t present, std::size_t n)
+{
+  for (std::size_t boundary : level_boundaries(n))
+    if (boundary < present)
+      return (std::max)(boundary, std::size_t(1));
+  return 1;
+}
+
+// The cells of the points, each in that of its nearest present point: a
+// label per point (equal labels, one cell), and the sums of each label's
+// points (x, y, z, count), in input order.
+struct Cells
+{
+  std::vector<std::size_t> label;
+  std::vector<std::array<double, 4> > sum;
+};
+
+inline Cells cells_of_present(const std::vector<Point>& points, const std::vector<bool>& present)
+{
+  Cells cells{ std::vector<std::size_t>(points.size()),
+               std::vector<std::array<double, 4> >(points.size(), { 0., 0., 0., 0. }) };
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    const std::size_t l = cells.label[p] = nearest_present(points, present, p);
+    cells.sum[l] = { cells.sum[l][0] + points[p].x(), cells.sum[l][1] + points[p].y(),
+                     cells.sum[l][2] + points[p].z(), cells.sum[l][3] + 1. };
+  }
+  return cells;
+}
+
+// At a boundary: each point the stage removed (in removal order) brings its
+// cell into that of the present point nearest it among those of nonzero
+// weight, if any, the sums of its cell added to those of the other; then
+// each cell with a present point keeps, among that point and the stage's
+// removed points of the cell, the one nearest the cell's centroid, which
+// takes the other's place in `stage_removed`.
+inline void relocate_boundary(const std::vector<Point>& points, const std::vector<std::int64_t>& weights,
+                              std::vector<bool>& present, Cells& cells, std::vector<std::size_t>& stage_removed)
+{
+  const std::size_t n = points.size();
+  for (std::size_t r : stage_removed)
+  {
+    Neighbor nearest{ std::numeric_limits<double>::infinity(), n };
+    for (std::size_t q = 0; q < n; ++q)
+      if (present[q] && weights[r * n + q] != 0)
+        nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
+    if (nearest.second == n)
+      continue;
+    const std::size_t from = cells.label[r], to = cells.label[nearest.second];
+    for (int c = 0; c < 4; ++c)
+      cells.sum[to][c] += cells.sum[from][c];
+    for (std::size_t& l : cells.label)
+      if (l == from)
+        l = to;
+  }
+  const std::vector<bool> sites = present;
+  for (std::size_t site = 0; site < n; ++site)
+  {
+    if (!sites[site])
+      continue;
+    const std::array<double, 4>& sum = cells.sum[cells.label[site]];
+    const Point centroid(sum[0] / sum[3], sum[1] / sum[3], sum[2] / sum[3]);
+    Neighbor best{ squared_distance(points[site], centroid), site };
+    for (std::size_t r : stage_removed)
+      if (cells.label[r] == cells.label[site])
+        best = (std::min)(best, Neighbor{ squared_distance(points[r], centroid), r });
+    if (best.second == site)
+      continue;
+    present[site] = false;
+    present[best.second] = true;
+    *std::find(stage_removed.begin(), stage_removed.end(), best.second) = site;
+  }
+}
+
+// The removal order of the `present` points down to one, in stages that end
+// at the level boundaries, each relocated.
+inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>& points, const Field& field,
+                                                        std::vector<bool> present)
+{
+  const std::size_t n = points.size();
+  Cells cells = cells_of_present(points, present);
+  std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
+  std::vector<std::size_t> removed;
+  while (count > 1)
+  {
+    const Stage stage = stage_to(count, stage_end(count, n), field.effective_area);
+    const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
+    std::vector<std::size_t> stage_removed;
+    for (; count > stage.target; --count)
+    {
+      const std::size_t p = most_crowded(weights, present);
+      present[p] = false;
+      stage_removed.push_back(p);
+    }
+    if (stage.target > 1)
+      relocate_boundary(points, weights, present, cells, stage_removed);
+    removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
+  }
+  return removed;
+}
+
 // The ranks of the default mode with the level `level` exact: the points
-// kept by the default mode down to `level` go on being eliminated among
-// themselves, from the relocated ones, down to one point; rank 0 is the last
-// point present, and the points removed after it come before those removed
-// earlier.
+// kept by the default mode down to `level` are ordered by eliminating among
+// them by boundaries; rank 0 is the last point present, and the points
+// removed after it come before those removed earlier.
 inline std::vector<std::size_t> ranks(const std::vector<Point>& points, const Field& field, std::size_t level)
 {
   const std::size_t n = points.size();
-  std::vector<std::size_t> removed = removal_order(points, field, level);
+  std::vector<std::size_t> removed = level < n ? removal_order(points, field, level) : std::vector<std::size_t>();
   std::vector<bool> kept(n, true);
   for (std::size_t p : removed)
     kept[p] = false;
-  for (std::size_t p : eliminate(points, field, 1, kept))
+  for (std::size_t p : eliminate_by_boundaries(points, field, kept))
     removed.push_back(p);
   std::vector<std::size_t> rank(n, 0); // the one point never removed keeps 0
   for (std::size_t j = 0; j < removed.size(); ++j)

@@ -109,6 +109,15 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
   return points;
 }
 
+// The indices of the points in input order.
+inline std::vector<Index> indices_by_input_position(const Indexed_points& points)
+{
+  std::vector<Index> by_input(points.size());
+  for (Index i = 0; i < Index(points.size()); ++i)
+    by_input[points.input_position[i]] = i;
+  return by_input;
+}
+
 // Reorders points given in input order along a Hilbert curve.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)

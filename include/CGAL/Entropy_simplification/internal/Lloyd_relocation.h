@@ -21,15 +21,6 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// The indices of the points in input order.
-inline std::vector<Index> indices_by_input_position(const Indexed_points& points)
-{
-  std::vector<Index> by_input(points.size());
-  for (Index i = 0; i < Index(points.size()); ++i)
-    by_input[points.input_position[i]] = i;
-  return by_input;
-}
-
 // The Voronoi cells of the present points (the sites) among the input
 // points: each input point falls in the cell of its nearest site (ties by
 // input position).

@@ -11,6 +11,7 @@
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Level_cells.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -37,16 +39,22 @@ struct Elimination_stage
   double limit;
 };
 
-// The stages halve the number of points, the last one reaching the target:
-// each stage's radius suits its own count, and every stage's result is a
-// subset of the previous one, so the elimination is progressive.
-inline Elimination_stage next_stage(std::size_t present, std::size_t target, double effective_area)
+// The stage from `present` points down to `stage_target`: its radius suits
+// its own count, and its result is a subset of the previous stage's, so the
+// elimination is progressive.
+inline Elimination_stage stage_down_to(std::size_t present, std::size_t stage_target, double effective_area)
 {
   Elimination_stage stage;
-  stage.target = (std::max)(target, (present + 1) / 2);
+  stage.target = stage_target;
   stage.radius = std::sqrt(effective_area / (2. * std::sqrt(3.) * double(stage.target)));
   stage.limit = stage.radius * 0.65 * (1. - std::pow(double(stage.target) / double(present), 1.5));
   return stage;
+}
+
+// The stages halve the number of points, the last one reaching the target.
+inline Elimination_stage next_stage(std::size_t present, std::size_t target, double effective_area)
+{
+  return stage_down_to(present, (std::max)(target, (present + 1) / 2), effective_area);
 }
 
 // `x` in [0, 2^53) rounded half up, as std::llround rounds it, without its
@@ -121,6 +129,15 @@ public:
   }
   const Elimination_field& field() const { return m_field; }
 
+  // Makes the next remove_down_to() end its stages at the level boundaries
+  // (see level_boundary_below) and relocate each of them (see Level_cells),
+  // so that the prefixes a ranking passes through are nearly as good as
+  // direct calls'. `site[i]` is the present point nearest `i`.
+  void relocate_level_boundaries(std::vector<Index> site)
+  {
+    m_level_cells.emplace(m_points, indices_by_input_position(m_points), std::move(site));
+  }
+
   // Removes points down to `target`, calling `removed(i)` after each removal;
   // stops early, returning false, when it returns false.
   template <typename ConcurrencyTag, typename Removed>
@@ -128,12 +145,20 @@ public:
   {
     while (m_count > target)
     {
-      const Elimination_stage stage = next_stage(m_count, target, m_field.effective_area);
+      const Elimination_stage stage =
+        m_level_cells ? stage_down_to(m_count, (std::max)(target, level_boundary_below(m_count, m_points.size())),
+                                      m_field.effective_area)
+                      : next_stage(m_count, target, m_field.effective_area);
       gather_neighbors<ConcurrencyTag>(stage);
-      if (!eliminate<ConcurrencyTag>(stage, removed))
-        return false;
+      std::vector<Index> stage_removed = eliminate<ConcurrencyTag>(stage);
+      if (m_level_cells && stage.target > target)
+        relocate_level<ConcurrencyTag>(stage_removed);
+      for (Index p : stage_removed)
+        if (!removed(p))
+          return false;
     }
     // the relocation that follows needs none of the elimination's memory
+    m_level_cells.reset();
     std::vector<std::size_t>().swap(m_first);
     std::vector<Index>().swap(m_neighbors);
     std::vector<std::atomic<std::int64_t> >().swap(m_weight);
@@ -380,8 +405,8 @@ private:
       [](std::size_t) { return true; });
   }
 
-  // The stage's removals in rounds that give the order of removing the
-  // first point one at a time. That order removes, before any of its
+  // The stage's removals, in order, in rounds that give the order of
+  // removing the first point one at a time. That order removes, before any of its
   // neighbours, a point that comes before them all and among the `remaining`
   // first (the weights only decrease, and fewer than `remaining` points come
   // before it), and removing it sooner changes no other removal, as it
@@ -390,8 +415,8 @@ private:
   // the removals are that order. The threshold, the `remaining`-th point
   // when it is taken, stays valid until no candidate comes before it: at
   // most as many points as removals left come before it.
-  template <typename ConcurrencyTag, typename Removed>
-  bool eliminate(const Elimination_stage& stage, const Removed& removed)
+  template <typename ConcurrencyTag>
+  std::vector<Index> eliminate(const Elimination_stage& stage)
   {
     std::vector<Removal> removals;
     removals.reserve(m_count - stage.target);
@@ -404,10 +429,56 @@ private:
     }
     sort_by<ConcurrencyTag>(removals.begin(), removals.end(),
                             [](const Removal& a, const Removal& b) { return a.key < b.key; });
+    std::vector<Index> order;
+    order.reserve(removals.size());
     for (const Removal& r : removals)
-      if (!removed(r.id))
-        return false;
-    return true;
+      order.push_back(r.id);
+    return order;
+  }
+
+  // The present point nearest `i` among those within its reach (the stage's
+  // neighbours), ties to the lowest input position; none when none is.
+  std::optional<Index> nearest_present_neighbor(Index i) const
+  {
+    std::optional<Index> nearest;
+    double nearest_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t e = m_first[i]; e < m_first[i + 1]; ++e)
+    {
+      const Index j = m_neighbors[e];
+      if (!is_present(j))
+        continue;
+      const double d = squared_distance(m_points.points[i], m_points.points[j]);
+      if (d < nearest_distance ||
+          (d == nearest_distance && m_points.input_position[j] < m_points.input_position[*nearest]))
+      {
+        nearest = j;
+        nearest_distance = d;
+      }
+    }
+    return nearest;
+  }
+
+  // At a level boundary: the points removed in the stage join the cells of
+  // their nearest present neighbours, and each cell's point moves toward
+  // its centroid.
+  template <typename ConcurrencyTag>
+  void relocate_level(std::vector<Index>& stage_removed)
+  {
+    std::vector<std::optional<Index> > site(stage_removed.size());
+    for_each_index<ConcurrencyTag>(
+      stage_removed.size(), [&](std::size_t r) { site[r] = nearest_present_neighbor(stage_removed[r]); },
+      [](std::size_t) { return true; });
+    for (std::size_t r = 0; r < stage_removed.size(); ++r)
+      if (site[r])
+        m_level_cells->join(stage_removed[r], *site[r]);
+    list_present();
+    const std::vector<Index> arrived =
+      m_level_cells->move_toward_centroids(m_points, m_listed, m_present, stage_removed);
+    list_present();
+    const std::size_t stayed = m_listed.size();
+    m_listed.insert(m_listed.end(), arrived.begin(), arrived.end());
+    std::sort(m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
+    std::inplace_merge(m_listed.begin(), m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
   }
 
   std::int64_t weight(Index a, Index b, const Elimination_stage& stage) const
@@ -425,6 +496,8 @@ private:
   // that choosing each round's candidates reads only them; the points
   // removed since are dropped between rounds
   std::vector<Index> m_listed;
+  // the cells of a ranking's level boundaries, while it runs down to its level
+  std::optional<Level_cells> m_level_cells;
   static constexpr std::size_t gather_block = std::size_t(1) << 15;
   // the blocks of indices whose keys are read in parallel, and the stride
   // of the sample that bounds a threshold

@@ -89,18 +89,41 @@ void relocate(const Indexed_points& points, Engine_run& run)
     run.removed[rank[swap.second]] = swap.first;
 }
 
+// For each point, the present point nearest it (ties by input position):
+// itself when present.
+template <typename ConcurrencyTag>
+std::vector<Index> nearest_present_points(const Indexed_points& points, const std::vector<char>& present)
+{
+  if (std::find(present.begin(), present.end(), 0) == present.end())
+    return all_indices(points.size());
+  const Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(points, present);
+  std::vector<Index> site(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    site[i] = cells.sites[cells.site_of[i]];
+  return site;
+}
+
 // Orders the points a default-mode run kept, once relocated: the
-// elimination goes on among them, with the stages it would have, down to
-// one point, which no removal follows. The callback, still at 1, can stop it.
+// elimination goes on among them down to one point, which no removal
+// follows, its stages ending at the level boundaries below, each relocated
+// (see Level_cells) from the cells of the kept points. The callback can
+// stop it: it receives the fraction done when the run removed nothing (no
+// level), as run_engine() does, and 1 otherwise.
 template <typename ConcurrencyTag>
 bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
                         const std::function<bool(double)>& callback)
 {
-  engine.set_present(present_after(run, points.size()));
+  const std::vector<char> present = present_after(run, points.size());
+  engine.relocate_level_boundaries(nearest_present_points<ConcurrencyTag>(points, present));
+  engine.set_present(present);
+  const bool whole_run = run.removed.empty();
+  const std::size_t removals = points.size() - run.removed.size() - 1;
+  const std::size_t period = whole_run ? (std::max)(std::size_t(1), removals / 1000) : 1024;
   std::size_t count = 0;
   return engine.template remove_down_to<ConcurrencyTag>(1, [&](Index p) {
     run.removed.push_back(p);
-    return ++count % 1024 != 0 || !callback || callback(1.);
+    return ++count % period != 0 || !callback ||
+           callback(whole_run ? 0.25 + 0.75 * double(count) / double(removals) : 1.);
   });
 }
 
