@@ -415,6 +415,47 @@ TEST_CASE("The program's report measures the kept rows as the library measures t
   CHECK(report.mean_distance > 0.);
 }
 
+TEST_CASE("The program's report of --lod measures the first rows by rank at each boundary and at the level",
+          "[program][report][lod]")
+{
+  es::Input_file file(cli_input("grid.xyz"));
+  const es::Cloud cloud = es::read_cloud(file.bytes(), es::Format::xyz);
+  const es::Column* xyz[3] = { cloud.table.find("x"), cloud.table.find("y"), cloud.table.find("z") };
+  std::vector<es::Kernel::Point_3> input;
+  for (std::size_t row = 0; row < cloud.size(); ++row)
+  {
+    const std::array<double, 3> p = es::coordinates(cloud, xyz, row);
+    input.emplace_back(p[0], p[1], p[2]);
+  }
+  // any order of the rows: the rows by rank, reversed and rotated
+  std::vector<std::size_t> by_rank(cloud.size());
+  for (std::size_t r = 0; r < by_rank.size(); ++r)
+    by_rank[r] = (by_rank.size() - 1 - r + 17) % by_rank.size();
+  // 50, 20, 10, 5, 2 and 1% of 144 rounded up: 72, 28.8, 14.4, 7.2, 2.88, 1.44
+  const std::vector<std::size_t> boundaries = { 72, 29, 15, 8, 3, 2 }, with_level = { 72, 37, 29, 15, 8, 3, 2 };
+  REQUIRE(cloud.size() == 144);
+  for (const std::optional<std::size_t> level : { std::optional<std::size_t>(), std::optional<std::size_t>(37) })
+  {
+    const std::vector<std::size_t>& sizes = level ? with_level : boundaries;
+    const auto reports = es::prefix_reports<CGAL::Sequential_tag>(cloud, by_rank, level);
+    REQUIRE(reports.size() == sizes.size());
+    for (std::size_t j = 0; j < sizes.size(); ++j)
+    {
+      std::vector<es::Kernel::Point_3> first;
+      for (std::size_t r = 0; r < sizes[j]; ++r)
+        first.push_back(input[by_rank[r]]);
+      const auto expected = CGAL::measure_simplification_quality<CGAL::Sequential_tag>(input, first);
+      INFO("the first " << sizes[j]);
+      CHECK(reports[j].kept_size == sizes[j]);
+      CHECK(reports[j].mean_distance == expected.mean_distance);
+      CHECK(reports[j].max_distance == expected.max_distance);
+      CHECK((reports[j].point_to_plane == expected.point_to_plane ||
+             (std::isnan(reports[j].point_to_plane) && std::isnan(expected.point_to_plane))));
+    }
+  }
+  CHECK(es::prefix_reports<CGAL::Sequential_tag>(cloud, {}, std::nullopt).empty());
+}
+
 TEST_CASE("Georeferenced LAS: the same integer records with other offsets keep the same points",
           "[program][las]")
 {

@@ -87,6 +87,9 @@ inline const char* examples_text()
          "                                                   and a picture of the input beside the result\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.05 --report\n"
          "                                                   and how far the input lies from the result\n"
+         "  entropy_simplify scan.ply lod.ply --lod --report\n"
+         "                                                   every point by rank, and the quality of its\n"
+         "                                                   first 50, 20, 10, 5, 2 and 1%: a ratio chosen\n"
          "  entropy_simplify scan.ply out.ply --ratio 0.1 --threads 4\n"
          "                                                   on at most 4 threads, the same result\n"
          "LAZ is not supported (no LAZ library in Debian 12): decompress it first, e.g.\n"
@@ -233,7 +236,9 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
                                      "thread); the result does not depend on N")->type_name("N");
   app.add_flag("--report", s.report, "print the quality of the result: the mean and greatest distance from "
                                      "the input points to the kept ones, and the point-to-plane error, over "
-                                     "the input's bounding-box diagonal (printed even with --quiet)");
+                                     "the input's bounding-box diagonal (printed even with --quiet); with "
+                                     "--lod, that of the first points by rank at 50, 20, 10, 5, 2 and 1% and "
+                                     "at the level asked for");
   app.add_flag("-q,--quiet", s.quiet, "print nothing but errors (and the report, if asked for)");
   app.footer(examples_text());
   try

@@ -173,16 +173,23 @@ int run(int argc, char** argv)
   const std::vector<std::size_t>& kept = selection.kept;
   const std::string targets =
     s.output + (s.indices.empty() ? "" : ", " + s.indices) + (s.render.empty() ? "" : ", " + s.render);
-  if (!s.quiet && s.lod)
+  const bool level_asked = s.ratio || s.count;
+  if (!s.quiet && s.lod && level_asked)
     std::printf("entropy_simplify: wrote the %zu points by rank, the first %zu exactly the simplification asked "
                 "for, in %.3g s, peak memory %.0f MiB; wrote %s\n",
                 cloud.size(), kept.size(), timer.time(), peak_memory_mib(), targets.c_str());
+  else if (!s.quiet && s.lod)
+    std::printf("entropy_simplify: wrote the %zu points by rank, in %.3g s, peak memory %.0f MiB; wrote %s\n",
+                cloud.size(), timer.time(), peak_memory_mib(), targets.c_str());
   else if (!s.quiet)
     std::printf("entropy_simplify: kept %zu of %zu points (%.4g%%) in %.3g s, peak memory %.0f MiB; wrote %s\n",
                 kept.size(), cloud.size(), 100. * double(kept.size()) / double(cloud.size()), timer.time(),
                 peak_memory_mib(), targets.c_str());
   // measured once the output is safe, so that it never delays the file
-  if (s.report)
+  if (s.report && s.lod)
+    print_prefix_reports(prefix_reports<CGAL::Parallel_if_available_tag>(
+      cloud, selection.by_rank, level_asked ? std::optional<std::size_t>(kept.size()) : std::nullopt));
+  else if (s.report)
     print_quality_report(quality_of<CGAL::Parallel_if_available_tag>(cloud, kept));
   return exit_done;
 }

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // --report: the quality of the kept rows measured against the whole cloud,
-// through the library, on row numbers rather than copies of the points.
+// through the library, on row numbers rather than copies of the points;
+// with --lod, that of the prefixes at the level boundaries.
 
 #ifndef ENTROPY_SIMPLIFY_QUALITY_REPORT_H
 #define ENTROPY_SIMPLIFY_QUALITY_REPORT_H
@@ -12,8 +13,11 @@
 
 #include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace entropy_simplify {
@@ -38,6 +42,46 @@ inline void print_quality_report(const CGAL::Entropy_simplification::Quality_rep
     std::printf("  point-to-plane  none (fewer than 3 points kept span no plane)\n");
   else
     std::printf("  point-to-plane  %.6g\n", r.point_to_plane);
+}
+
+// --lod --report: the quality of the first m rows by rank, for m at each
+// level boundary from 50 to 1% and at the level asked for (if any),
+// largest first, so that one run shows what each ratio would keep.
+template <typename ConcurrencyTag>
+std::vector<CGAL::Entropy_simplification::Quality_report>
+prefix_reports(const Cloud& cloud, const std::vector<std::size_t>& by_rank, std::optional<std::size_t> level)
+{
+  std::vector<std::size_t> sizes;
+  for (double percentage : { 50., 20., 10., 5., 2., 1. })
+    sizes.push_back(CGAL::Entropy_simplification::internal::kept_count_from_percentage(by_rank.size(), percentage));
+  if (level)
+    sizes.push_back(*level);
+  std::sort(sizes.begin(), sizes.end(), std::greater<std::size_t>());
+  sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+  std::vector<CGAL::Entropy_simplification::Quality_report> reports;
+  for (std::size_t m : sizes)
+    if (m > 0)
+      reports.push_back(quality_of<ConcurrencyTag>(
+        cloud, std::vector<std::size_t>(by_rank.begin(), by_rank.begin() + std::ptrdiff_t(m))));
+  return reports;
+}
+
+inline void print_prefix_reports(const std::vector<CGAL::Entropy_simplification::Quality_report>& reports)
+{
+  if (reports.empty())
+    return;
+  std::printf("entropy_simplify: quality of the first points by rank against the %zu input points, distances over "
+              "the bounding-box diagonal (%.6g):\n",
+              reports.front().input_size, reports.front().diagonal);
+  std::printf("  %12s %9s  %-14s %-14s %s\n", "points", "share", "mean distance", "max distance", "point-to-plane");
+  for (const CGAL::Entropy_simplification::Quality_report& r : reports)
+  {
+    char plane[32] = "none";
+    if (!std::isnan(r.point_to_plane))
+      std::snprintf(plane, sizeof plane, "%.6g", r.point_to_plane);
+    std::printf("  %12zu %8.4g%%  %-14.6g %-14.6g %s\n", r.kept_size,
+                100. * double(r.kept_size) / double(r.input_size), r.mean_distance, r.max_distance, plane);
+  }
 }
 
 } // namespace entropy_simplify
