@@ -11,6 +11,7 @@
 #include "point_files.h"
 #include "simplify_cloud.h"
 
+#include <CGAL/Entropy_simplification/internal/Level_cells.h>
 #include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 
 #include <algorithm>
@@ -45,24 +46,26 @@ inline void print_quality_report(const CGAL::Entropy_simplification::Quality_rep
 }
 
 // --lod --report: the quality of the first m rows by rank, for m at each
-// level boundary from 50 to 1% and at the level asked for (if any),
+// level boundary the ranks relocate, from 50 to 1%, and at the level asked
+// for (if any),
 // largest first, so that one run shows what each ratio would keep.
 template <typename ConcurrencyTag>
 std::vector<CGAL::Entropy_simplification::Quality_report>
 prefix_reports(const Cloud& cloud, const std::vector<std::size_t>& by_rank, std::optional<std::size_t> level)
 {
+  namespace ES = CGAL::Entropy_simplification::internal;
+  const std::size_t n = by_rank.size(), one_percent = ES::kept_count_from_percentage(n, 1.);
   std::vector<std::size_t> sizes;
-  for (double percentage : { 50., 20., 10., 5., 2., 1. })
-    sizes.push_back(CGAL::Entropy_simplification::internal::kept_count_from_percentage(by_rank.size(), percentage));
-  if (level)
+  for (std::size_t m = ES::level_boundary_below(n, n); m > 0 && m >= one_percent; m = ES::level_boundary_below(m, n))
+    sizes.push_back(m);
+  if (level && *level > 0)
     sizes.push_back(*level);
   std::sort(sizes.begin(), sizes.end(), std::greater<std::size_t>());
   sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
   std::vector<CGAL::Entropy_simplification::Quality_report> reports;
   for (std::size_t m : sizes)
-    if (m > 0)
-      reports.push_back(quality_of<ConcurrencyTag>(
-        cloud, std::vector<std::size_t>(by_rank.begin(), by_rank.begin() + std::ptrdiff_t(m))));
+    reports.push_back(quality_of<ConcurrencyTag>(
+      cloud, std::vector<std::size_t>(by_rank.begin(), by_rank.begin() + std::ptrdiff_t(m))));
   return reports;
 }
 

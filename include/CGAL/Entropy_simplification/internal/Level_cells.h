@@ -22,9 +22,9 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// The count at which a ranking's stage ends, above its level: the largest
-// of 50, 20, 10, 5, 2, 1, 0.5, ...% of the n points (rounded up) below
-// `present`, or 0 when none is. Users cut levels of detail at such round
+// The count at which a stage of a ranking's elimination among its kept
+// points ends: the largest of 50, 20, 10, 5, 2, 1, 0.5, ...% of the n
+// points (rounded up) below `present`, or 0 when none is. Users cut levels of detail at such round
 // fractions, and each of them is relocated.
 inline std::size_t level_boundary_below(std::size_t present, std::size_t n)
 {
