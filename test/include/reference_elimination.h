@@ -23,7 +23,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
+#include <CGAL/hilbert_sort.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -223,14 +223,14 @@ inline Scale scale_among(const std::vector<Point>& points, const std::vector<std
   return scale;
 }
 
-// The input positions in the Hilbert order that CGAL::spatial_sort gives,
-// called exactly as the package calls it (it shuffles with a fixed seed).
+// The input positions along the Hilbert curve that CGAL::hilbert_sort gives
+// (median policy), called on the input order as the package calls it.
 inline std::vector<std::size_t> hilbert_order(const std::vector<Point>& points)
 {
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Point>::const_type>;
-  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
   return order;
 }
 
