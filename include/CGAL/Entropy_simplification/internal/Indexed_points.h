@@ -10,7 +10,7 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -33,8 +33,9 @@ using Working_point = Working_kernel::Point_3;
 
 // The points in double precision, in spatial (Hilbert) order so that
 // neighbours are near each other in memory, each with its position in the
-// input range. Every order the package defines breaks ties by that position,
-// so results do not depend on the internal order.
+// input range. Every neighbour and removal order the package defines breaks
+// ties by that position, so none depends on the internal order; the default
+// mode's coarse points and budget do (see Elimination_field.h).
 struct Indexed_points
 {
   std::vector<Working_point> points;
@@ -123,10 +124,12 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)
 {
   // The points are sorted with their input positions rather than through
-  // them, so that the sort reads memory in order. spatial_sort shuffles with
-  // a fixed seed, so the order is reproducible, and what it compares does
-  // not depend on what it moves. Its parallel version makes the same splits,
-  // so the order is the same.
+  // them, so that the sort reads memory in order. One curve through all the
+  // points, not spatial_sort's rounds of random subsets (made for
+  // incremental triangulations), so that a neighbourhood lies in one stretch
+  // of memory, which makes the searches faster. The median splits depend on
+  // the points and the input order alone, and the parallel sort makes the
+  // sequential one's splits, so the order is reproducible.
   using Positioned = std::pair<Working_point, Index>;
   std::vector<Positioned> sorted;
   sorted.reserve(points_in_input_order.size());
@@ -135,7 +138,7 @@ Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)
   std::vector<Working_point>().swap(points_in_input_order);
   using Sort_traits =
     CGAL::Spatial_sort_traits_adapter_3<Working_kernel, CGAL::First_of_pair_property_map<Positioned> >;
-  CGAL::spatial_sort<ConcurrencyTag>(sorted.begin(), sorted.end(), Sort_traits());
+  CGAL::hilbert_sort<ConcurrencyTag>(sorted.begin(), sorted.end(), Sort_traits());
 
   Indexed_points result;
   result.points.reserve(sorted.size());
