@@ -6,7 +6,7 @@
 // package. Neighbours come from linear scans, every point's weight is summed
 // from scratch before every removal, and every nearest point of the
 // relocation is found by a scan. Of the package it uses only the public Options; of CGAL,
-// the kernel, the Hilbert sort and the jet fitting.
+// the kernel and the jet fitting.
 //
 // Every formula runs its floating-point operations in the package's order, so
 // that the fields agree to the last bits and the removal orders exactly: a
@@ -21,9 +21,6 @@
 #include <CGAL/Eigen_svd.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/property_map.h>
-#include <CGAL/hilbert_sort.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -223,24 +220,52 @@ inline Scale scale_among(const std::vector<Point>& points, const std::vector<std
   return scale;
 }
 
-// The input positions along the Hilbert curve that CGAL::hilbert_sort gives
-// (median policy), called on the input order as the package calls it.
-inline std::vector<std::size_t> hilbert_order(const std::vector<Point>& points)
+// The input positions in kd order, from the manual's definition: the
+// points are split into halves, the lower half first, along the widest
+// side of their bounding box (the first of equal sides), a point below
+// another when its coordinate there is smaller, or equal with a smaller input
+// position; each half is ordered so in turn, down to single points. Here
+// each range is fully sorted, not partitioned, to pick its lower half.
+inline void kd_sort(const std::vector<Point>& points, std::size_t* first, std::size_t* beyond)
+{
+  if (beyond - first < 2)
+    return;
+  double extent[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    const auto [low, high] = std::minmax_element(first, beyond, [&](std::size_t a, std::size_t b) {
+      return points[a].cartesian(d) < points[b].cartesian(d);
+    });
+    extent[d] = points[*high].cartesian(d) - points[*low].cartesian(d);
+  }
+  int side = 0;
+  for (int d = 1; d < 3; ++d)
+    if (extent[d] > extent[side])
+      side = d;
+  std::sort(first, beyond, [&](std::size_t a, std::size_t b) {
+    const double ca = points[a].cartesian(side), cb = points[b].cartesian(side);
+    return ca < cb || (ca == cb && a < b);
+  });
+  std::size_t* middle = first + (beyond - first) / 2;
+  kd_sort(points, first, middle);
+  kd_sort(points, middle, beyond);
+}
+
+inline std::vector<std::size_t> kd_order(const std::vector<Point>& points)
 {
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Point>::const_type>;
-  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+  kd_sort(points, order.data(), order.data() + order.size());
   return order;
 }
 
-// The coarse scale: every 64th point of the Hilbert order, whose spacing is
+// The coarse scale: every 64th point of the kd order, whose spacing is
 // sqrt(64) = 8 times the input's. Its neighbourhoods need k + 1 points.
-inline std::vector<std::size_t> coarse_points(const std::vector<std::size_t>& hilbert, unsigned int k)
+inline std::vector<std::size_t> coarse_points(const std::vector<std::size_t>& kd, unsigned int k)
 {
   std::vector<std::size_t> coarse;
-  for (std::size_t r = 0; r < hilbert.size(); r += 64)
-    coarse.push_back(hilbert[r]);
+  for (std::size_t r = 0; r < kd.size(); r += 64)
+    coarse.push_back(kd[r]);
   if (coarse.size() < std::size_t(k) + 1)
     coarse.clear();
   return coarse;
@@ -311,8 +336,8 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
   std::vector<std::size_t> all(n);
   std::iota(all.begin(), all.end(), std::size_t(0));
   const Scale fine = scale_among(points, all, k, options.normal_estimation);
-  const std::vector<std::size_t> hilbert = hilbert_order(points);
-  const std::vector<std::size_t> coarse = coarse_points(hilbert, k);
+  const std::vector<std::size_t> kd = kd_order(points);
+  const std::vector<std::size_t> coarse = coarse_points(kd, k);
 
   Field field;
   field.normals = fine.normals;
@@ -333,10 +358,10 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
   const double largest_area = 1000. * median(area);
   for (double& a : area)
     a = (std::min)(a, largest_area);
-  // Summed in the package's internal order, the Hilbert order, so that the
+  // Summed in the package's internal order, the kd order, so that the
   // rounding of the sums, hence the budget, is the same.
   double total_area = 0., feature_area = 0.;
-  for (std::size_t p : hilbert)
+  for (std::size_t p : kd)
   {
     total_area += area[p];
     feature_area += area[p] * strength[p];
