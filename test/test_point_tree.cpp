@@ -1,10 +1,13 @@
-// The package's kd tree against a linear scan: the k nearest neighbours in
+// The package's tree against a linear scan: the k nearest neighbours in
 // the package's order (squared distance, then input position), the points
 // within a reach that depends on both points' scales, and removals. The
 // clouds hold thousands of points, so that the tree has many levels, and
-// points on an integer lattice, so that many distances tie.
+// points on an integer lattice, so that many distances tie. And the kd
+// order the tree follows against the independent reference's.
 
 #include <catch2/catch.hpp>
+
+#include "reference_elimination.h"
 
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
@@ -102,6 +105,54 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
   }
 }
 
+TEST_CASE("Point tree: any indices, in any order, on points in any order", "[point tree]")
+{
+  // the tree follows the halves of the kd order, which these points are not
+  // in, and sorts the indices it is given: given shuffled, clustered in two
+  // short runs, or repeated, it answers as a scan
+  ESI::Indexed_points p = test_points();
+  ESI::Portable_random random(7);
+  std::vector<ESI::Index> members;
+  for (ESI::Index i = 1000; i < 1100; ++i)
+    members.push_back(i);
+  for (ESI::Index i = 2990; i < 3000; ++i)
+    members.push_back(i);
+  for (std::size_t i = members.size(); i-- > 1;)
+    std::swap(members[i], members[random.below(i + 1)]);
+  std::vector<ESI::Neighbor> best;
+  {
+    const ESI::Point_tree tree(p, members.begin(), members.end());
+    for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
+    {
+      tree.nearest(q, 10, best);
+      REQUIRE(ids(best) == scan_nearest(p, members, q, 10));
+    }
+  }
+  // 60 copies of one index and 60 of another: the tree stops splitting
+  std::vector<ESI::Index> repeated(60, 5);
+  repeated.insert(repeated.end(), 60, 6);
+  const ESI::Point_tree tree(p, repeated.begin(), repeated.end());
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 11)
+  {
+    tree.nearest(q, 1, best);
+    REQUIRE(ids(best) == scan_nearest(p, repeated, q, 1));
+  }
+  // and on points in kd order, whose halves it follows
+  std::vector<ESI::Working_point> input(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    input[p.input_position[i]] = p.points[i];
+  p = ESI::sort_spatially(input);
+  for (ESI::Index i = 0; i < ESI::Index(p.size()); i += 2)
+    members.push_back(i);
+  const ESI::Point_tree sorted(p, members.begin(), members.end());
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
+  {
+    sorted.nearest(q, 10, best);
+    REQUIRE(ids(best) == scan_nearest(p, members, q, 10));
+    REQUIRE(sorted.nearest_one(q) == scan_nearest(p, members, q, 1).front());
+  }
+}
+
 TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]")
 {
   const ESI::Indexed_points p = test_points();
@@ -161,7 +212,7 @@ TEST_CASE("Point tree: a tree built in parallel answers as a linear scan", "[poi
 #endif
 
 #ifdef CGAL_LINKED_WITH_TBB
-// The orders the two modes start from: CGAL's parallel spatial sort makes the
+// The orders the two modes start from: the parallel kd sort makes the
 // splits of the sequential one, and the sort of coincident points is by a
 // total order; on 150,000 points both run their parallel code.
 TEST_CASE("Point tree: the spatial order and the collapse of copies do not depend on the tag", "[point tree]")
@@ -181,3 +232,22 @@ TEST_CASE("Point tree: the spatial order and the collapse of copies do not depen
   CHECK(one.copies.size() > 100000); // 30,000 lattice positions for 150,000 points
 }
 #endif
+
+// The kd order against the reference's definition, by full sorts, on
+// lattice points whose coordinates tie everywhere, and on uniform ones.
+TEST_CASE("Point tree: the kd order is the manual's", "[point tree]")
+{
+  ESI::Portable_random random(29);
+  for (bool lattice : { true, false })
+  {
+    std::vector<ESI::Working_point> points;
+    for (std::size_t i = 0; i < 20000; ++i)
+      if (lattice)
+        points.emplace_back(double(random.below(30)), double(random.below(20)), double(random.below(4)));
+      else
+        points.emplace_back(random.uniform(), 2. * random.uniform(), 0.5 * random.uniform());
+    const ESI::Indexed_points sorted = ESI::sort_spatially(points);
+    const std::vector<std::size_t> expected = reference::kd_order(points);
+    REQUIRE(std::equal(sorted.input_position.begin(), sorted.input_position.end(), expected.begin(), expected.end()));
+  }
+}

@@ -8,10 +8,11 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/property_map.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -31,7 +33,7 @@ using Index = std::uint32_t;
 using Working_kernel = CGAL::Simple_cartesian<double>;
 using Working_point = Working_kernel::Point_3;
 
-// The points in double precision, in spatial (Hilbert) order so that
+// The points in double precision, in kd order (see sort_spatially) so that
 // neighbours are near each other in memory, each with its position in the
 // input range. Every neighbour and removal order the package defines breaks
 // ties by that position, so none depends on the internal order; the default
@@ -119,31 +121,75 @@ inline std::vector<Index> indices_by_input_position(const Indexed_points& points
   return by_input;
 }
 
-// Reorders points given in input order along a Hilbert curve.
+// A point with its input position.
+using Positioned_point = std::pair<Working_point, Index>;
+
+// The side along which points spread widest: 0, 1 or 2 for x, y or z, the
+// first of equal sides.
+inline int widest_side(const Positioned_point* first, const Positioned_point* beyond)
+{
+  double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const Positioned_point* p = first; p != beyond; ++p)
+    for (int d = 0; d < 3; ++d)
+    {
+      low[d] = (std::min)(low[d], p->first.cartesian(d));
+      high[d] = (std::max)(high[d], p->first.cartesian(d));
+    }
+  int side = 0;
+  for (int d = 1; d < 3; ++d)
+    if (high[d] - low[d] > high[side] - low[side])
+      side = d;
+  return side;
+}
+
+// Puts points in kd order: the lower half first, split along the widest
+// side, ties by input position so that the halves are unique, each half in
+// kd order in turn, down to single points. The halves are independent, so
+// the parallel sort gives the sequential one's order.
+template <typename ConcurrencyTag>
+void sort_in_kd_order(Positioned_point* first, Positioned_point* beyond)
+{
+  if (beyond - first < 2)
+    return;
+  const int side = widest_side(first, beyond);
+  Positioned_point* middle = first + (beyond - first) / 2;
+  std::nth_element(first, middle, beyond, [side](const Positioned_point& a, const Positioned_point& b) {
+    const double ca = a.first.cartesian(side), cb = b.first.cartesian(side);
+    return ca < cb || (ca == cb && a.second < b.second);
+  });
+#ifdef CGAL_LINKED_WITH_TBB
+  if (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && beyond - first > (1 << 16))
+  {
+    tbb::parallel_invoke([&] { sort_in_kd_order<ConcurrencyTag>(first, middle); },
+                         [&] { sort_in_kd_order<ConcurrencyTag>(middle, beyond); });
+    return;
+  }
+#endif
+  sort_in_kd_order<ConcurrencyTag>(first, middle);
+  sort_in_kd_order<ConcurrencyTag>(middle, beyond);
+}
+
+// Reorders points given in input order into kd order, the order of the
+// leaves of a kd tree split at medians down to single points: each half of
+// a half is a compact cell, so that a neighbourhood lies in one stretch of
+// memory, and a Point_tree on any of the points follows those halves
+// without a sort of its own.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)
 {
-  // The points are sorted with their input positions rather than through
-  // them, so that the sort reads memory in order. One curve through all the
-  // points, not spatial_sort's rounds of random subsets (made for
-  // incremental triangulations), so that a neighbourhood lies in one stretch
-  // of memory, which makes the searches faster. The median splits depend on
-  // the points and the input order alone, and the parallel sort makes the
-  // sequential one's splits, so the order is reproducible.
-  using Positioned = std::pair<Working_point, Index>;
-  std::vector<Positioned> sorted;
+  // sorted with their input positions rather than through them, so that the
+  // sort reads memory in order
+  std::vector<Positioned_point> sorted;
   sorted.reserve(points_in_input_order.size());
   for (std::size_t i = 0; i < points_in_input_order.size(); ++i)
     sorted.emplace_back(points_in_input_order[i], Index(i));
   std::vector<Working_point>().swap(points_in_input_order);
-  using Sort_traits =
-    CGAL::Spatial_sort_traits_adapter_3<Working_kernel, CGAL::First_of_pair_property_map<Positioned> >;
-  CGAL::hilbert_sort<ConcurrencyTag>(sorted.begin(), sorted.end(), Sort_traits());
+  sort_in_kd_order<ConcurrencyTag>(sorted.data(), sorted.data() + sorted.size());
 
   Indexed_points result;
   result.points.reserve(sorted.size());
   result.input_position.reserve(sorted.size());
-  for (const Positioned& p : sorted)
+  for (const Positioned_point& p : sorted)
   {
     result.points.push_back(p.first);
     result.input_position.push_back(p.second);

@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Entropy_simplification authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A kd tree over point indices, with the package's exact neighbour order.
+// A tree of boxes over point indices, with the package's exact neighbour
+// order.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -39,8 +41,12 @@ struct Neighbor
   }
 };
 
-// A kd tree over some of the indices of an Indexed_points, split at the
-// median of the widest side down to leaves of at most `leaf_size` points.
+// A tree of boxes over some of the indices of an Indexed_points, down to
+// leaves of at most `leaf_size` points. A node splits its indices where the
+// kd order (see sort_spatially) splits the interval of indices it covers, so
+// that on points in kd order each node holds the tree's points in one cell of
+// a kd tree, with their bounding box, and the tree is built without moving a
+// point. Its searches are exact on any points, only slower on others.
 // Searches are const and may run in parallel; `remove` may not.
 class Point_tree
 {
@@ -54,8 +60,6 @@ class Point_tree
   {
     double low[3], high[3];
     Index first, beyond, child;
-    int cut = 0;           // the dimension an inner node splits
-    double cut_value = 0.; // the coordinate its upper child's points start from
   };
 
 public:
@@ -64,11 +68,12 @@ public:
              ConcurrencyTag = ConcurrencyTag())
     : m_points(points), m_order(first, beyond)
   {
-    // the shape of the tree depends on the number of points alone: laid out
-    // first, its nodes are then filled independently of each other
+    if (!std::is_sorted(m_order.begin(), m_order.end()))
+      std::sort(m_order.begin(), m_order.end());
+    // laid out first, the nodes are then filled independently of each other
     m_nodes.reserve(2 * (m_order.size() / leaf_size + 1));
     m_nodes.push_back(Node());
-    lay_out(0, 0, Index(m_order.size()));
+    lay_out(0, 0, Index(m_order.size()), 0, points.size());
     fill<ConcurrencyTag>(0);
   }
 
@@ -133,23 +138,42 @@ public:
   }
 
 private:
-  void lay_out(std::size_t node, Index first, Index beyond)
+  // Node `node` holds m_order[first, beyond), the tree's indices in
+  // [low, high), which splits where the kd order splits it, in halves; when
+  // all of them fall in one half, that half is split in turn.
+  void lay_out(std::size_t node, Index first, Index beyond, std::size_t low, std::size_t high)
   {
     m_nodes[node].first = first;
     m_nodes[node].beyond = beyond;
     m_nodes[node].child = 0;
     if (beyond - first <= leaf_size)
       return;
-    const Index child = Index(m_nodes.size());
-    m_nodes[node].child = child;
-    m_nodes.resize(m_nodes.size() + 2);
-    const Index middle = first + (beyond - first) / 2;
-    lay_out(child, first, middle);
-    lay_out(child + 1, middle, beyond);
+    for (;;)
+    {
+      // repeated indices end the splitting rather than split forever
+      if (high - low < 2)
+        return;
+      const std::size_t half = low + (high - low) / 2;
+      const Index middle =
+        Index(std::lower_bound(m_order.begin() + first, m_order.begin() + beyond, half) - m_order.begin());
+      if (middle == first)
+        low = half;
+      else if (middle == beyond)
+        high = half;
+      else
+      {
+        const Index child = Index(m_nodes.size());
+        m_nodes[node].child = child;
+        m_nodes.resize(m_nodes.size() + 2);
+        lay_out(child, first, middle, low, half);
+        lay_out(child + 1, middle, beyond, half, high);
+        return;
+      }
+    }
   }
 
-  // The box of a node, then, for an inner node, its points split at the
-  // median of the box's widest side between its children.
+  // The box of a node: of its points for a leaf, of its children's boxes
+  // otherwise.
   template <typename ConcurrencyTag>
   void fill(std::size_t n)
   {
@@ -159,37 +183,34 @@ private:
       node.low[d] = HUGE_VAL;
       node.high[d] = -HUGE_VAL;
     }
-    for (Index r = node.first; r < node.beyond; ++r)
-      for (int d = 0; d < 3; ++d)
-      {
-        const double c = m_points.points[m_order[r]].cartesian(d);
-        node.low[d] = (std::min)(node.low[d], c);
-        node.high[d] = (std::max)(node.high[d], c);
-      }
     if (node.child == 0)
+    {
+      for (Index r = node.first; r < node.beyond; ++r)
+        for (int d = 0; d < 3; ++d)
+        {
+          const double c = m_points.points[m_order[r]].cartesian(d);
+          node.low[d] = (std::min)(node.low[d], c);
+          node.high[d] = (std::max)(node.high[d], c);
+        }
       return;
-    node.cut = 0;
-    for (int d = 1; d < 3; ++d)
-      if (node.high[d] - node.low[d] > node.high[node.cut] - node.low[node.cut])
-        node.cut = d;
-    const Index middle = m_nodes[node.child].beyond;
-    const int cut = node.cut;
-    std::nth_element(m_order.begin() + node.first, m_order.begin() + middle, m_order.begin() + node.beyond,
-                     [&](Index a, Index b) {
-                       return m_points.points[a].cartesian(cut) < m_points.points[b].cartesian(cut);
-                     });
-    node.cut_value = m_points.points[m_order[middle]].cartesian(cut);
+    }
+    const Index child = node.child;
 #ifdef CGAL_LINKED_WITH_TBB
     if (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value &&
         node.beyond - node.first > parallel_build_size)
-    {
-      const Index child = node.child;
       tbb::parallel_invoke([&] { fill<ConcurrencyTag>(child); }, [&] { fill<ConcurrencyTag>(child + 1); });
-      return;
-    }
+    else
 #endif
-    fill<ConcurrencyTag>(node.child);
-    fill<ConcurrencyTag>(node.child + 1);
+    {
+      fill<ConcurrencyTag>(child);
+      fill<ConcurrencyTag>(child + 1);
+    }
+    for (const Node& part : { m_nodes[child], m_nodes[child + 1] })
+      for (int d = 0; d < 3; ++d)
+      {
+        node.low[d] = (std::min)(node.low[d], part.low[d]);
+        node.high[d] = (std::max)(node.high[d], part.high[d]);
+      }
   }
 
   bool is_removed(Index i) const { return !m_removed.empty() && m_removed[i]; }
@@ -230,8 +251,8 @@ private:
     }
   };
 
-  // Visits the child on the side of `q` first, then the other unless its box
-  // is farther than the bound.
+  // Visits the child whose box is nearer `q` first, then the other unless
+  // its box is farther than the bound.
   template <typename Best>
   void search_nearest(std::size_t n, Index q, Best& best) const
   {
@@ -248,11 +269,17 @@ private:
       }
       return;
     }
-    const Index upper_side = center.cartesian(node.cut) < node.cut_value ? 0 : 1;
-    const Index first = node.child + upper_side, second = node.child + 1 - upper_side;
-    if (squared_distance_to_box(center, m_nodes[first]) <= best.bound())
+    Index first = node.child, second = node.child + 1;
+    double first_distance = squared_distance_to_box(center, m_nodes[first]);
+    double second_distance = squared_distance_to_box(center, m_nodes[second]);
+    if (second_distance < first_distance)
+    {
+      std::swap(first, second);
+      std::swap(first_distance, second_distance);
+    }
+    if (first_distance <= best.bound())
       search_nearest(first, q, best);
-    if (squared_distance_to_box(center, m_nodes[second]) <= best.bound())
+    if (second_distance <= best.bound())
       search_nearest(second, q, best);
   }
 
@@ -298,7 +325,7 @@ private:
   }
 
   const Indexed_points& m_points;
-  std::vector<Index> m_order; // the tree's points, each node's contiguous
+  std::vector<Index> m_order; // the tree's points in index order, each node's contiguous
   std::vector<Node> m_nodes;
   std::vector<char> m_removed; // empty until a removal
   std::vector<double> m_largest_scale; // of each node, for within_reach
