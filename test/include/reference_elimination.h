@@ -259,13 +259,27 @@ inline std::vector<std::size_t> kd_order(const std::vector<Point>& points)
   return order;
 }
 
-// The coarse scale: every 64th point of the kd order, whose spacing is
-// sqrt(64) = 8 times the input's. Its neighbourhoods need k + 1 points.
+// The manual's scrambling of input positions, a fixed 32-bit hash.
+inline std::uint32_t scramble(std::uint32_t x)
+{
+  x = (x ^ (x >> 16)) * 0x7feb352dU;
+  x = (x ^ (x >> 15)) * 0x846ca68bU;
+  return x ^ (x >> 16);
+}
+
+// The coarse scale: one point from each run of 64 in the kd order, the one
+// whose input position scrambles lowest, so that their spacing is sqrt(64)
+// = 8 times the input's. Its neighbourhoods need k + 1 points.
 inline std::vector<std::size_t> coarse_points(const std::vector<std::size_t>& kd, unsigned int k)
 {
   std::vector<std::size_t> coarse;
   for (std::size_t r = 0; r < kd.size(); r += 64)
-    coarse.push_back(kd[r]);
+  {
+    const auto block_end = kd.begin() + std::ptrdiff_t((std::min)(kd.size(), r + 64));
+    coarse.push_back(*std::min_element(kd.begin() + std::ptrdiff_t(r), block_end, [](std::size_t a, std::size_t b) {
+      return scramble(std::uint32_t(a)) < scramble(std::uint32_t(b));
+    }));
+  }
   if (coarse.size() < std::size_t(k) + 1)
     coarse.clear();
   return coarse;
