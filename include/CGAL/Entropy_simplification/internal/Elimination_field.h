@@ -195,16 +195,30 @@ bool normal_entropy_of_all(const Indexed_points& points, unsigned int k, Normal_
     [](Index i) { return i; }, normals, entropy, progress);
 }
 
+// The points of the coarse scale: from each block of `coarse_stride` points
+// of the kd order, the one whose input position scrambles lowest.
+inline std::vector<Index> coarse_points(const Indexed_points& points)
+{
+  std::vector<Index> coarse;
+  for (std::size_t first = 0; first < points.size(); first += coarse_stride)
+  {
+    Index drawn = Index(first);
+    for (std::size_t i = first + 1; i < (std::min)(points.size(), first + coarse_stride); ++i)
+      if (scrambled(points.input_position[i]) < scrambled(points.input_position[drawn]))
+        drawn = Index(i);
+    coarse.push_back(drawn);
+  }
+  return coarse;
+}
+
 // The feature strength of every point, from the entropy of the normals of
 // its neighbourhood: the greater of that of `entropy`, at the scale of k,
-// and that of the coarse scale, made of every `coarse_stride`-th point.
+// and that of the coarse scale (see coarse_points).
 template <typename ConcurrencyTag>
 std::vector<double> feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
                                       const std::vector<double>& entropy)
 {
-  std::vector<Index> coarse;
-  for (std::size_t i = 0; i < points.size(); i += coarse_stride)
-    coarse.push_back(Index(i));
+  const std::vector<Index> coarse = coarse_points(points);
   std::vector<double> strength = coarse_feature_strength<ConcurrencyTag>(points, coarse, k, estimation);
   const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
