@@ -92,7 +92,7 @@ struct Setting
 // normals the package writes.
 struct Field_by_position
 {
-  std::vector<ESI::Working_vector> normals;
+  ESI::Array<ESI::Working_vector> normals;
   std::vector<double> scale;
   double effective_area = 0.;
 };
@@ -100,11 +100,11 @@ struct Field_by_position
 template <typename ConcurrencyTag>
 Field_by_position package_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options)
 {
-  const ESI::Indexed_points indexed = ESI::sort_spatially(points);
+  const ESI::Indexed_points indexed = ESI::sort_spatially(ESI::Array<ESI::Working_point>(points.begin(), points.end()));
   ESI::Weighted_elimination engine(indexed, k, options);
   REQUIRE(engine.initialize<ConcurrencyTag>([](double) { return true; }));
   const ESI::Elimination_field& field = engine.field();
-  const std::vector<ESI::Working_vector> normals =
+  const ESI::Array<ESI::Working_vector> normals =
     engine.normals_of<ConcurrencyTag>(ESI::all_indices(points.size()));
   Field_by_position by_position;
   by_position.normals.resize(points.size());

@@ -41,10 +41,10 @@ ESI::Indexed_points test_points()
 
 // The first `count` points of `candidates` other than q, by (squared
 // distance, input position), by sorting them all.
-std::vector<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const std::vector<ESI::Index>& candidates,
+ESI::Array<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates,
                                      ESI::Index q, std::size_t count)
 {
-  std::vector<ESI::Index> others;
+  ESI::Array<ESI::Index> others;
   for (ESI::Index i : candidates)
     if (i != q)
       others.push_back(i);
@@ -57,9 +57,9 @@ std::vector<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const std::ve
   return others;
 }
 
-std::vector<ESI::Index> ids(const std::vector<ESI::Neighbor>& best)
+ESI::Array<ESI::Index> ids(const ESI::Array<ESI::Neighbor>& best)
 {
-  std::vector<ESI::Index> result;
+  ESI::Array<ESI::Index> result;
   for (const ESI::Neighbor& n : best)
     result.push_back(n.id);
   return result;
@@ -71,11 +71,11 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
 {
   const ESI::Indexed_points p = test_points();
   // a tree over every third point, queried from every point
-  std::vector<ESI::Index> members;
+  ESI::Array<ESI::Index> members;
   for (ESI::Index i = 0; i < ESI::Index(p.size()); i += 3)
     members.push_back(i);
   ESI::Point_tree tree(p, members.begin(), members.end());
-  std::vector<ESI::Neighbor> best;
+  ESI::Array<ESI::Neighbor> best;
   for (std::size_t count : { std::size_t(0), std::size_t(1), std::size_t(10), std::size_t(40) })
     for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 7)
     {
@@ -88,7 +88,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, members, q, 1).front());
   // remove all but 30 members: the searches skip the removed points
   ESI::Portable_random random(5);
-  std::vector<ESI::Index> present = members;
+  ESI::Array<ESI::Index> present = members;
   while (present.size() > 30)
   {
     const std::size_t r = random.below(present.size());
@@ -112,14 +112,14 @@ TEST_CASE("Point tree: any indices, in any order, on points in any order", "[poi
   // short runs, or repeated, it answers as a scan
   ESI::Indexed_points p = test_points();
   ESI::Portable_random random(7);
-  std::vector<ESI::Index> members;
+  ESI::Array<ESI::Index> members;
   for (ESI::Index i = 1000; i < 1100; ++i)
     members.push_back(i);
   for (ESI::Index i = 2990; i < 3000; ++i)
     members.push_back(i);
   for (std::size_t i = members.size(); i-- > 1;)
     std::swap(members[i], members[random.below(i + 1)]);
-  std::vector<ESI::Neighbor> best;
+  ESI::Array<ESI::Neighbor> best;
   {
     const ESI::Point_tree tree(p, members.begin(), members.end());
     for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
@@ -129,7 +129,7 @@ TEST_CASE("Point tree: any indices, in any order, on points in any order", "[poi
     }
   }
   // 60 copies of one index and 60 of another: the tree stops splitting
-  std::vector<ESI::Index> repeated(60, 5);
+  ESI::Array<ESI::Index> repeated(60, 5);
   repeated.insert(repeated.end(), 60, 6);
   const ESI::Point_tree tree(p, repeated.begin(), repeated.end());
   for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 11)
@@ -138,7 +138,7 @@ TEST_CASE("Point tree: any indices, in any order, on points in any order", "[poi
     REQUIRE(ids(best) == scan_nearest(p, repeated, q, 1));
   }
   // and on points in kd order, whose halves it follows
-  std::vector<ESI::Working_point> input(p.size());
+  ESI::Array<ESI::Working_point> input(p.size());
   for (std::size_t i = 0; i < p.size(); ++i)
     input[p.input_position[i]] = p.points[i];
   p = ESI::sort_spatially(input);
@@ -156,14 +156,14 @@ TEST_CASE("Point tree: any indices, in any order, on points in any order", "[poi
 TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]")
 {
   const ESI::Indexed_points p = test_points();
-  const std::vector<ESI::Index> all = ESI::all_indices(p.size());
+  const ESI::Array<ESI::Index> all = ESI::all_indices(p.size());
   ESI::Portable_random random(3);
-  std::vector<double> scales;
+  ESI::Array<double> scales;
   for (std::size_t i = 0; i < p.size(); ++i)
     scales.push_back(0.5 + 1.5 * random.uniform());
   ESI::Point_tree tree(p, all.begin(), all.end());
   tree.record_largest_scales(scales);
-  std::vector<ESI::Index> inside;
+  ESI::Array<ESI::Index> inside;
   std::size_t found = 0;
   for (double radius : { 0.3, 1. })
     for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 5)
@@ -173,7 +173,7 @@ TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]"
       REQUIRE(std::adjacent_find(inside.begin(), inside.end()) == inside.end());
       // every point strictly within the reach is found; any other found is
       // at the reach within rounding
-      std::vector<ESI::Index> strictly;
+      ESI::Array<ESI::Index> strictly;
       for (ESI::Index j : all)
       {
         const double reach = radius * (scales[q] + scales[j]);
@@ -200,9 +200,9 @@ TEST_CASE("Point tree: a tree built in parallel answers as a linear scan", "[poi
     p.points.emplace_back(double(random.below(400)), double(random.below(400)), random.uniform());
     p.input_position.push_back(ESI::Index(i));
   }
-  const std::vector<ESI::Index> all = ESI::all_indices(p.size());
+  const ESI::Array<ESI::Index> all = ESI::all_indices(p.size());
   const ESI::Point_tree tree(p, all.begin(), all.end(), CGAL::Parallel_tag());
-  std::vector<ESI::Neighbor> best;
+  ESI::Array<ESI::Neighbor> best;
   for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 997)
   {
     tree.nearest(q, 10, best);
@@ -218,7 +218,7 @@ TEST_CASE("Point tree: a tree built in parallel answers as a linear scan", "[poi
 TEST_CASE("Point tree: the spatial order and the collapse of copies do not depend on the tag", "[point tree]")
 {
   ESI::Portable_random random(23);
-  std::vector<ESI::Working_point> points;
+  ESI::Array<ESI::Working_point> points;
   for (std::size_t i = 0; i < 150000; ++i)
     points.emplace_back(double(random.below(100)), double(random.below(100)), double(random.below(3)));
   const ESI::Indexed_points sequential = ESI::sort_spatially<CGAL::Sequential_tag>(points);
@@ -240,14 +240,14 @@ TEST_CASE("Point tree: the kd order is the manual's", "[point tree]")
   ESI::Portable_random random(29);
   for (bool lattice : { true, false })
   {
-    std::vector<ESI::Working_point> points;
+    ESI::Array<ESI::Working_point> points;
     for (std::size_t i = 0; i < 20000; ++i)
       if (lattice)
         points.emplace_back(double(random.below(30)), double(random.below(20)), double(random.below(4)));
       else
         points.emplace_back(random.uniform(), 2. * random.uniform(), 0.5 * random.uniform());
     const ESI::Indexed_points sorted = ESI::sort_spatially(points);
-    const std::vector<std::size_t> expected = reference::kd_order(points);
+    const std::vector<std::size_t> expected = reference::kd_order({ points.begin(), points.end() });
     REQUIRE(std::equal(sorted.input_position.begin(), sorted.input_position.end(), expected.begin(), expected.end()));
   }
 }

@@ -11,6 +11,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
@@ -22,7 +23,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <functional>
-#include <vector>
 
 namespace CGAL {
 
@@ -36,7 +36,7 @@ namespace internal {
 // The importance of each distinct point, in input order, as `options.mode`
 // computes it before any removal; empty when the callback stopped it.
 template <typename ConcurrencyTag>
-std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& points, unsigned int k,
+Array<double> importance_of_distinct_points(Array<Working_point>&& points, unsigned int k,
                                                   const Options& options,
                                                   const std::function<bool(double)>& callback)
 {
@@ -44,7 +44,7 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
   const Working_vector plane_normal =
     options.mode == Mode::paper ? reference_normal(options, points) : Working_vector(CGAL::NULL_VECTOR);
   const Indexed_points indexed = sort_spatially<ConcurrencyTag>(std::move(points));
-  std::vector<double> by_index;
+  Array<double> by_index;
   if (options.mode == Mode::paper)
   {
     Paper_simplification state(indexed, k, options, plane_normal);
@@ -59,7 +59,7 @@ std::vector<double> importance_of_distinct_points(std::vector<Working_point>&& p
     if (by_index.empty())
       return {};
   }
-  std::vector<double> importance(indexed.size());
+  Array<double> importance(indexed.size());
   for (Index i = 0; i < Index(indexed.size()); ++i)
     importance[indexed.input_position[i]] = by_index[i];
   return importance;
@@ -167,18 +167,18 @@ bool compute_entropy_importance(PointRange& points, unsigned int k, ImportanceMa
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  std::vector<ES::Working_point> input = ES::working_points(points, np);
+  ES::Array<ES::Working_point> input = ES::working_points(points, np);
   const std::size_t n = input.size();
   if (n == 0)
     return true;
   ES::Distinct_points distinct = ES::collapse_duplicates<ConcurrencyTag>(std::move(input));
   ES::check_simplification_arguments(n, distinct.size(), k, n, options);
 
-  const std::vector<double> of_distinct =
+  const ES::Array<double> of_distinct =
     ES::importance_of_distinct_points<ConcurrencyTag>(std::move(distinct.points), k, options, callback);
   if (of_distinct.empty())
     return false;
-  std::vector<double> of_input(n);
+  ES::Array<double> of_input(n);
   for (std::size_t d = 0; d < distinct.size(); ++d)
     of_input[distinct.input_position[d]] = of_distinct[d];
   for (std::size_t c = 0; c < distinct.copies.size(); ++c)

@@ -9,6 +9,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -23,7 +24,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 
@@ -98,7 +98,7 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
                                                internal_np::geom_traits_t>::value,
                 "compute_mean_normal_angle_entropy() reads only the named parameters point_map and geom_traits");
 
-  std::vector<ES::Working_point> input = ES::working_points(points, np);
+  ES::Array<ES::Working_point> input = ES::working_points(points, np);
   if (k < ES::minimum_k(options.normal_estimation) || input.size() < std::size_t(k) + 1)
     throw std::invalid_argument("compute_mean_normal_angle_entropy: k = " + std::to_string(k) +
                                 " is too small for the normal estimation or too large for " +
@@ -111,7 +111,7 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
 
   // Summed in input order, so that the result does not depend on the
   // package's internal order.
-  std::vector<double> importance(indexed.size());
+  ES::Array<double> importance(indexed.size());
   for (ES::Index i = 0; i < ES::Index(indexed.size()); ++i)
     importance[indexed.input_position[i]] = state.importance(i);
   double sum = 0.;

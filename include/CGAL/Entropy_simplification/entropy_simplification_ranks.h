@@ -11,6 +11,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/named_parameters.h>
 #include <CGAL/Entropy_simplification/internal/simplify_points.h>
@@ -22,7 +23,6 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <vector>
 
 namespace CGAL {
 
@@ -36,10 +36,10 @@ namespace internal {
 // The ranks of n points from the removals of a run through the kept points:
 // the points no removal took first, in input order, then the removed ones,
 // the last removed first.
-inline std::vector<std::size_t> ranks_from_removals(std::size_t n, const std::vector<Index>& removed)
+inline Array<std::size_t> ranks_from_removals(std::size_t n, const Array<Index>& removed)
 {
   constexpr std::size_t unranked = (std::numeric_limits<std::size_t>::max)();
-  std::vector<std::size_t> rank(n, unranked);
+  Array<std::size_t> rank(n, unranked);
   for (std::size_t j = 0; j < removed.size(); ++j)
     rank[removed[j]] = n - 1 - j;
   std::size_t next = 0;
@@ -200,7 +200,7 @@ bool entropy_simplification_ranks(const PointRange& points, unsigned int k, Outp
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  std::vector<ES::Working_point> input = ES::working_points(points, np);
+  ES::Array<ES::Working_point> input = ES::working_points(points, np);
   const std::size_t n = input.size();
   if (n == 0)
     return true;
@@ -210,7 +210,7 @@ bool entropy_simplification_ranks(const PointRange& points, unsigned int k, Outp
   ES::check_simplification_arguments(n, distinct.size(), k, paper ? (std::max)(level, std::size_t(k) + 1) : level,
                                      options);
 
-  const std::optional<std::vector<ES::Index> > removed = ES::simplify_points<ConcurrencyTag>(
+  const std::optional<ES::Array<ES::Index> > removed = ES::simplify_points<ConcurrencyTag>(
     std::move(distinct), k, level, ES::Run_extent::through_the_kept, options, callback, false,
     [](ES::Index, const ES::Working_vector&) {});
   if (!removed)

@@ -10,6 +10,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -27,7 +28,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 
@@ -259,7 +259,7 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  std::vector<ES::Working_point> input = ES::working_points(points, np);
+  ES::Array<ES::Working_point> input = ES::working_points(points, np);
   const std::size_t n = input.size();
   if (n == 0)
     return points.end();
@@ -271,12 +271,12 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
 
   // the kept points' normals wait for the run to end, so that the iterators
   // to the range are not held at its peak of memory
-  std::vector<std::pair<ES::Index, ES::Working_vector> > normals;
-  const std::vector<ES::Index> removed =
+  ES::Array<std::pair<ES::Index, ES::Working_vector> > normals;
+  const ES::Array<ES::Index> removed =
     ES::simplify_points<ConcurrencyTag>(
       std::move(distinct), k, target, ES::Run_extent::to_target, options, callback, has_normal_map,
       [&](ES::Index position, const ES::Working_vector& n) { normals.emplace_back(position, n); })
-      .value_or(std::vector<ES::Index>());
+      .value_or(ES::Array<ES::Index>());
 
   const auto at = ES::iterators_of(points);
   if constexpr (has_normal_map)

@@ -9,6 +9,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
@@ -23,7 +24,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -64,7 +64,7 @@ namespace internal {
 // The kept points nearest a kept point, itself included, span its plane.
 constexpr unsigned int quality_plane_points = 10;
 
-inline double bounding_box_diagonal(const std::vector<Working_point>& points)
+inline double bounding_box_diagonal(const Array<Working_point>& points)
 {
   double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   for (const Working_point& p : points)
@@ -79,7 +79,7 @@ inline double bounding_box_diagonal(const std::vector<Working_point>& points)
 
 // The input points, then the kept ones, in one set: a tree of the kept ones
 // then answers the queries of both, ties going to the first kept point.
-inline Indexed_points input_then_kept(const std::vector<Working_point>& input, const std::vector<Working_point>& kept)
+inline Indexed_points input_then_kept(const Array<Working_point>& input, const Array<Working_point>& kept)
 {
   if (input.size() + kept.size() >= std::size_t((std::numeric_limits<Index>::max)()))
     throw std::invalid_argument("measure_simplification_quality: the input and the kept points together must "
@@ -100,15 +100,15 @@ struct Local_plane
 // The plane of each kept point (those of `all` from `first_kept` on), from
 // it and its nearest kept points.
 template <typename ConcurrencyTag>
-std::vector<Local_plane> kept_planes(const Indexed_points& all, std::size_t first_kept, const Point_tree& kept_tree)
+Array<Local_plane> kept_planes(const Indexed_points& all, std::size_t first_kept, const Point_tree& kept_tree)
 {
   const std::size_t m = all.size() - first_kept;
   const std::size_t others = (std::min)(std::size_t(quality_plane_points), m) - 1;
-  std::vector<Local_plane> planes(m);
+  Array<Local_plane> planes(m);
   for_each_index<ConcurrencyTag>(
     m,
     [&](std::size_t r) {
-      thread_local std::vector<Neighbor> near;
+      thread_local Array<Neighbor> near;
       const Index c = Index(first_kept + r);
       kept_tree.nearest(c, others, near);
       auto point = [&](std::size_t j) -> const Working_point& { return all.points[j == 0 ? c : near[j - 1].id]; };
@@ -191,8 +191,8 @@ measure_simplification_quality(const InputRange& input, const KeptRange& kept,
                                                  internal_np::geom_traits_t>::value,
                 "measure_simplification_quality() reads only the named parameters point_map and geom_traits");
 
-  const std::vector<ES::Working_point> input_points = ES::working_points(input, input_np);
-  const std::vector<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
+  const ES::Array<ES::Working_point> input_points = ES::working_points(input, input_np);
+  const ES::Array<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
   if (input_points.empty() || kept_points.empty())
     throw std::invalid_argument(std::string("measure_simplification_quality: the ") +
                                 (input_points.empty() ? "input" : "simplification") + " is empty");
@@ -203,15 +203,15 @@ measure_simplification_quality(const InputRange& input, const KeptRange& kept,
 
   const std::size_t n = report.input_size;
   const ES::Indexed_points all = ES::input_then_kept(input_points, kept_points);
-  std::vector<ES::Index> kept_ids(report.kept_size);
+  ES::Array<ES::Index> kept_ids(report.kept_size);
   for (std::size_t r = 0; r < kept_ids.size(); ++r)
     kept_ids[r] = ES::Index(n + r);
   const ES::Point_tree kept_tree(all, kept_ids.begin(), kept_ids.end(), ConcurrencyTag());
   const bool has_planes = report.kept_size >= 3;
-  const std::vector<ES::Local_plane> planes =
-    has_planes ? ES::kept_planes<ConcurrencyTag>(all, n, kept_tree) : std::vector<ES::Local_plane>();
+  const ES::Array<ES::Local_plane> planes =
+    has_planes ? ES::kept_planes<ConcurrencyTag>(all, n, kept_tree) : ES::Array<ES::Local_plane>();
 
-  std::vector<double> distance(n), plane_distance(n, 0.);
+  ES::Array<double> distance(n), plane_distance(n, 0.);
   ES::for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {

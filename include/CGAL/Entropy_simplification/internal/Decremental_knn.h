@@ -7,6 +7,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DECREMENTAL_KNN_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DECREMENTAL_KNN_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -19,7 +20,6 @@
 #include <memory>
 #include <stdexcept>
 #include <unordered_map>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -85,7 +85,7 @@ public:
 
   // Removes `p` and writes to `changed` the present points that had `p`
   // among their k nearest neighbours; each of them now has a new k-th one.
-  void remove(Index p, std::vector<Index>& changed)
+  void remove(Index p, Array<Index>& changed)
   {
     m_present[p] = 0;
     m_tree->remove(p);
@@ -125,7 +125,7 @@ private:
   // search in a tree whose points are mostly deleted visits many empty
   // leaves. Rebuilding it each time half its points are gone costs at most
   // twice the first build.
-  void build_tree(const std::vector<Index>& indices)
+  void build_tree(const Array<Index>& indices)
   {
     m_tree = std::make_unique<Point_tree>(m_points, indices.begin(), indices.end());
     m_tree_size = m_present_count = indices.size();
@@ -133,7 +133,7 @@ private:
 
   void rebuild_tree()
   {
-    std::vector<Index> present;
+    Array<Index> present;
     present.reserve(m_present_count);
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
@@ -145,7 +145,7 @@ private:
   // neighbour order (or all of them when fewer points are present).
   void fill_candidates(Index q)
   {
-    thread_local std::vector<Neighbor> best;
+    thread_local Array<Neighbor> best;
     m_tree->nearest(q, m_capacity, best);
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
     for (std::size_t j = 0; j < best.size(); ++j)
@@ -211,12 +211,12 @@ private:
   std::unique_ptr<Point_tree> m_tree;
   std::size_t m_tree_size = 0;     // points the tree was built with
   std::size_t m_present_count = 0; // points present
-  std::vector<Index> m_candidates; // m_capacity entries per point
-  std::vector<Count> m_count;
-  std::vector<char> m_present;
-  std::vector<Index> m_reverse; // m_block entries per point
-  std::vector<Index> m_reverse_count;
-  std::unordered_map<Index, std::vector<Index> > m_overflow;
+  Array<Index> m_candidates; // m_capacity entries per point
+  Array<Count> m_count;
+  Array<char> m_present;
+  Array<Index> m_reverse; // m_block entries per point
+  Array<Index> m_reverse_count;
+  std::unordered_map<Index, Array<Index> > m_overflow;
 };
 
 } // namespace internal

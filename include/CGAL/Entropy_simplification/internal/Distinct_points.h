@@ -6,13 +6,13 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <functional>
 #include <tuple>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -29,10 +29,10 @@ namespace internal {
 // every distinct point is kept.
 struct Distinct_points
 {
-  std::vector<Working_point> points;  // the representatives, in input order
-  std::vector<Index> input_position;  // of each representative
-  std::vector<Index> copies;          // input positions of the other points, ascending
-  std::vector<Index> representative;  // for each copy, the index of its representative in `points`
+  Array<Working_point> points;  // the representatives, in input order
+  Array<Index> input_position;  // of each representative
+  Array<Index> copies;          // input positions of the other points, ascending
+  Array<Index> representative;  // for each copy, the index of its representative in `points`
 
   std::size_t size() const { return input_position.size(); }
 };
@@ -42,7 +42,7 @@ struct Distinct_points
 // earliest in input order.
 // The order is total (positions differ), so a parallel sort gives the same.
 template <typename ConcurrencyTag>
-Distinct_points collapse_duplicates(std::vector<Working_point> points)
+Distinct_points collapse_duplicates(Array<Working_point> points)
 {
   // the copies are sorted themselves, not their indices: a sort that moves
   // them reads memory in order, where one through indices would not
@@ -51,7 +51,7 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
     std::tuple<double, double, double, Index> key;
     bool operator<(const Positioned_point& other) const { return key < other.key; }
   };
-  std::vector<Positioned_point> sorted(points.size());
+  Array<Positioned_point> sorted(points.size());
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) { sorted[i].key = std::make_tuple(points[i].x(), points[i].y(), points[i].z(), Index(i)); },
@@ -59,7 +59,7 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
   sort_by<ConcurrencyTag>(sorted.begin(), sorted.end(), std::less<Positioned_point>());
 
   // the input position of the representative of each point
-  std::vector<Index> first(points.size());
+  Array<Index> first(points.size());
   Index representative = 0;
   for (std::size_t r = 0; r < sorted.size(); ++r)
   {
@@ -69,13 +69,13 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
       representative = position;
     first[position] = representative;
   }
-  std::vector<Positioned_point>().swap(sorted);
+  Array<Positioned_point>().swap(sorted);
 
   // The representatives move to the front of `points`, in input order: each
   // goes to a slot at or before its own, so the compaction is in place. The
   // slot of each representative is where it goes.
   Distinct_points result;
-  std::vector<Index> slot(points.size());
+  Array<Index> slot(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     if (first[i] == i)
@@ -97,9 +97,9 @@ Distinct_points collapse_duplicates(std::vector<Working_point> points)
 
 // The input positions of the `distinct_count` representatives, ascending:
 // those of no copy, `copies` being ascending.
-inline std::vector<Index> positions_of_no_copy(const std::vector<Index>& copies, std::size_t distinct_count)
+inline Array<Index> positions_of_no_copy(const Array<Index>& copies, std::size_t distinct_count)
 {
-  std::vector<Index> positions;
+  Array<Index> positions;
   positions.reserve(distinct_count);
   std::size_t c = 0;
   for (Index p = 0; positions.size() < distinct_count; ++p)

@@ -9,6 +9,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ELIMINATION_FIELD_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
@@ -16,7 +17,6 @@
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 
 #include <algorithm>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -28,7 +28,7 @@ namespace internal {
 // only the kept points' are written, estimated again at the end.
 struct Elimination_field
 {
-  std::vector<double> scale;
+  Array<double> scale;
   // the area the points sample, each point's share weighted by the density
   // its scale asks for (1 / scale^2)
   double effective_area = 0.;
@@ -39,9 +39,9 @@ struct Elimination_field
 // the normals, estimated on each point and its neighbours, go to `normals`.
 // Both are stored at `slot(i)`, so that a subset needs arrays of its size.
 template <typename ConcurrencyTag, typename NeighborsOf, typename SlotOf, typename Progress>
-bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Index>& subset, unsigned int k,
+bool estimate_normal_entropy(const Indexed_points& points, const Array<Index>& subset, unsigned int k,
                              Normal_estimation estimation, const NeighborsOf& neighbors, const SlotOf& slot,
-                             std::vector<Working_vector>& normals, std::vector<double>& entropy,
+                             Array<Working_vector>& normals, Array<double>& entropy,
                              const Progress& progress)
 {
   const std::size_t m = subset.size();
@@ -70,23 +70,23 @@ bool estimate_normal_entropy(const Indexed_points& points, const std::vector<Ind
 // the coarse points only. Their neighbourhoods are wider, so that a smooth
 // curvature that scanner noise hides at the fine scale shows there.
 template <typename ConcurrencyTag>
-std::vector<double> coarse_feature_strength(const Indexed_points& points, const std::vector<Index>& coarse,
+Array<double> coarse_feature_strength(const Indexed_points& points, const Array<Index>& coarse,
                                             unsigned int k, Normal_estimation estimation)
 {
   const std::size_t n = points.size();
-  std::vector<double> strength(n, 0.);
+  Array<double> strength(n, 0.);
   if (coarse.size() < std::size_t(k) + 1)
     return strength;
   const Point_tree tree(points, coarse.begin(), coarse.end(), ConcurrencyTag());
-  std::vector<Index> knn;
+  Array<Index> knn;
   nearest_neighbor_table<ConcurrencyTag>(tree, coarse, k, knn, [](std::size_t) { return true; });
   // the position of each coarse point in `coarse`, one past the end for the others
-  std::vector<Index> slot(n, Index(coarse.size()));
+  Array<Index> slot(n, Index(coarse.size()));
   for (std::size_t r = 0; r < coarse.size(); ++r)
     slot[coarse[r]] = Index(r);
   // the coarse points' normals and entropies, by slot
-  std::vector<Working_vector> normals(coarse.size(), CGAL::NULL_VECTOR);
-  std::vector<double> entropy(coarse.size(), 0.);
+  Array<Working_vector> normals(coarse.size(), CGAL::NULL_VECTOR);
+  Array<double> entropy(coarse.size(), 0.);
   estimate_normal_entropy<ConcurrencyTag>(
     points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
     [&](Index i) { return slot[i]; }, normals, entropy, [](double) { return true; });
@@ -105,9 +105,9 @@ std::vector<double> coarse_feature_strength(const Indexed_points& points, const 
 // The area each point samples: k points in a disc of the radius of its k-th
 // nearest neighbour.
 template <typename ConcurrencyTag, typename NeighborsOf>
-std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, const NeighborsOf& neighbors)
+Array<double> sampled_areas(const Indexed_points& points, unsigned int k, const NeighborsOf& neighbors)
 {
-  std::vector<double> area(points.size());
+  Array<double> area(points.size());
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) {
@@ -126,7 +126,7 @@ std::vector<double> sampled_areas(const Indexed_points& points, unsigned int k, 
 constexpr double largest_area_in_medians = 1000.;
 
 // Lowers the areas above `largest_area_in_medians` medians to that bound.
-inline void cap_isolated_areas(std::vector<double>& area)
+inline void cap_isolated_areas(Array<double>& area)
 {
   if (area.empty())
     return;
@@ -141,7 +141,7 @@ inline void cap_isolated_areas(std::vector<double>& area)
 // for (1 / scale^2), summed in input order so that it does not depend on the
 // internal order.
 template <typename ConcurrencyTag>
-void set_scales(const Indexed_points& points, const std::vector<double>& area, const std::vector<double>& strength,
+void set_scales(const Indexed_points& points, const Array<double>& area, const Array<double>& strength,
                 double feature_weight, Elimination_field& field)
 {
   const std::size_t n = points.size();
@@ -155,7 +155,7 @@ void set_scales(const Indexed_points& points, const std::vector<double>& area, c
   const double typical_area = median(area);
 
   field.scale.resize(n);
-  std::vector<double> weighted_area(n);
+  Array<double> weighted_area(n);
   for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
@@ -171,10 +171,10 @@ void set_scales(const Indexed_points& points, const std::vector<double>& area, c
 // The k nearest neighbours of every point, nearest first (those of point i
 // at knn[i * k]).
 template <typename ConcurrencyTag, typename Progress>
-bool nearest_neighbors_of_all(const Indexed_points& points, unsigned int k, std::vector<Index>& knn,
+bool nearest_neighbors_of_all(const Indexed_points& points, unsigned int k, Array<Index>& knn,
                               const Progress& progress)
 {
-  const std::vector<Index> all = all_indices(points.size());
+  const Array<Index> all = all_indices(points.size());
   const Point_tree tree(points, all.begin(), all.end(), ConcurrencyTag());
   return nearest_neighbor_table<ConcurrencyTag>(tree, all, k, knn, [&](std::size_t done) {
     return progress(double(done) / double(points.size()));
@@ -185,10 +185,10 @@ bool nearest_neighbors_of_all(const Indexed_points& points, unsigned int k, std:
 // the normals are estimated on the way and not kept.
 template <typename ConcurrencyTag, typename Progress>
 bool normal_entropy_of_all(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
-                           const std::vector<Index>& knn, std::vector<double>& entropy, const Progress& progress)
+                           const Array<Index>& knn, Array<double>& entropy, const Progress& progress)
 {
   const std::size_t n = points.size();
-  std::vector<Working_vector> normals(n, CGAL::NULL_VECTOR);
+  Array<Working_vector> normals(n, CGAL::NULL_VECTOR);
   entropy.assign(n, 0.);
   return estimate_normal_entropy<ConcurrencyTag>(
     points, all_indices(n), k, estimation, [&](Index i) { return &knn[std::size_t(i) * k]; },
@@ -197,9 +197,9 @@ bool normal_entropy_of_all(const Indexed_points& points, unsigned int k, Normal_
 
 // The points of the coarse scale: from each block of `coarse_stride` points
 // of the kd order, the one whose input position scrambles lowest.
-inline std::vector<Index> coarse_points(const Indexed_points& points)
+inline Array<Index> coarse_points(const Indexed_points& points)
 {
-  std::vector<Index> coarse;
+  Array<Index> coarse;
   for (std::size_t first = 0; first < points.size(); first += coarse_stride)
   {
     Index drawn = Index(first);
@@ -215,11 +215,11 @@ inline std::vector<Index> coarse_points(const Indexed_points& points)
 // its neighbourhood: the greater of that of `entropy`, at the scale of k,
 // and that of the coarse scale (see coarse_points).
 template <typename ConcurrencyTag>
-std::vector<double> feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
-                                      const std::vector<double>& entropy)
+Array<double> feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
+                                      const Array<double>& entropy)
 {
-  const std::vector<Index> coarse = coarse_points(points);
-  std::vector<double> strength = coarse_feature_strength<ConcurrencyTag>(points, coarse, k, estimation);
+  const Array<Index> coarse = coarse_points(points);
+  Array<double> strength = coarse_feature_strength<ConcurrencyTag>(points, coarse, k, estimation);
   const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
     points.size(),
@@ -233,18 +233,18 @@ std::vector<double> feature_strengths(const Indexed_points& points, unsigned int
 // strengths and the areas the points sample make the scales.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
-                               std::vector<Index> knn, Elimination_field& field, const Progress& progress)
+                               Array<Index> knn, Elimination_field& field, const Progress& progress)
 {
-  std::vector<double> entropy;
+  Array<double> entropy;
   if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy, progress))
     return false;
-  std::vector<double> area =
+  Array<double> area =
     sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
   cap_isolated_areas(area);
-  std::vector<Index>().swap(knn);
-  const std::vector<double> strength =
+  Array<Index>().swap(knn);
+  const Array<double> strength =
     feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
-  std::vector<double>().swap(entropy);
+  Array<double>().swap(entropy);
   set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, field);
   return true;
 }
@@ -253,30 +253,30 @@ bool compute_elimination_field(const Indexed_points& points, unsigned int k, con
 // importance, computed as the field computes it; empty when `progress`
 // asked to stop.
 template <typename ConcurrencyTag, typename Progress>
-std::vector<double> feature_strength_of_all(const Indexed_points& points, unsigned int k, const Options& options,
+Array<double> feature_strength_of_all(const Indexed_points& points, unsigned int k, const Options& options,
                                             const Progress& progress)
 {
-  std::vector<Index> knn;
-  std::vector<double> entropy;
+  Array<Index> knn;
+  Array<double> entropy;
   if (!nearest_neighbors_of_all<ConcurrencyTag>(points, k, knn, [&](double f) { return progress(0.5 * f); }) ||
       !normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
                                              [&](double f) { return progress(0.5 + 0.5 * f); }))
     return {};
-  std::vector<Index>().swap(knn);
+  Array<Index>().swap(knn);
   return feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
 }
 
 // The normal of each point of `subset`, estimated on it and its k nearest
 // neighbours among all the points, as the field estimates it.
 template <typename ConcurrencyTag>
-std::vector<Working_vector> estimate_normals(const Indexed_points& points, const std::vector<Index>& subset,
+Array<Working_vector> estimate_normals(const Indexed_points& points, const Array<Index>& subset,
                                              unsigned int k, Normal_estimation estimation)
 {
-  const std::vector<Index> all = all_indices(points.size());
+  const Array<Index> all = all_indices(points.size());
   const Point_tree tree(points, all.begin(), all.end(), ConcurrencyTag());
-  std::vector<Index> knn;
+  Array<Index> knn;
   nearest_neighbor_table<ConcurrencyTag>(tree, subset, k, knn, [](std::size_t) { return true; });
-  std::vector<Working_vector> normals(subset.size());
+  Array<Working_vector> normals(subset.size());
   for_each_index<ConcurrencyTag>(
     subset.size(),
     [&](std::size_t r) { normals[r] = neighborhood_normal(points, subset[r], &knn[r * k], k, estimation); },

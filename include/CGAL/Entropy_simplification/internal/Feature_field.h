@@ -8,6 +8,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FEATURE_FIELD_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 
@@ -16,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -57,7 +57,7 @@ double normal_tensor_entropy(std::size_t m, NormalAt normal)
 }
 
 // The median of some values (not empty).
-inline double median(std::vector<double> values)
+inline double median(Array<double> values)
 {
   std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
   return values[values.size() / 2];
@@ -66,7 +66,7 @@ inline double median(std::vector<double> values)
 // The noise floor of a cloud's normal entropies: their median, but not below
 // the entropy of normals spread by about one degree, so that a noise-free
 // sample of flat faces does not make every slight curvature a feature.
-inline double entropy_noise_floor(const std::vector<double>& entropy)
+inline double entropy_noise_floor(const Array<double>& entropy)
 {
   const double one_degree = 0.0175;
   const double smallest = -2. * (one_degree * one_degree / 2.) * std::log(one_degree * one_degree / 2.);

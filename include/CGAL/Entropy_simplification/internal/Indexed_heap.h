@@ -6,6 +6,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_INDEXED_HEAP_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_INDEXED_HEAP_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 
 #include <CGAL/assertions.h>
@@ -13,7 +14,6 @@
 #include <cstddef>
 #include <limits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -34,7 +34,7 @@ public:
   };
 
   // The entries' ids must be distinct and below `id_count`.
-  Indexed_heap(std::vector<Entry> entries, std::size_t id_count)
+  Indexed_heap(Array<Entry> entries, std::size_t id_count)
     : m_heap(std::move(entries)), m_position(id_count, none)
   {
     for (std::size_t i = 0; i < m_heap.size(); ++i)
@@ -116,8 +116,8 @@ private:
     place(i, e);
   }
 
-  std::vector<Entry> m_heap;
-  std::vector<Index> m_position;
+  Array<Entry> m_heap;
+  Array<Index> m_position;
 };
 
 } // namespace internal

@@ -6,6 +6,8 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_INDEXED_POINTS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_INDEXED_POINTS_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
@@ -18,12 +20,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -40,16 +42,16 @@ using Working_point = Working_kernel::Point_3;
 // mode's coarse points and budget do (see Elimination_field.h).
 struct Indexed_points
 {
-  std::vector<Working_point> points;
-  std::vector<Index> input_position;
+  Array<Working_point> points;
+  Array<Index> input_position;
 
   std::size_t size() const { return points.size(); }
 };
 
 // 0, 1, ..., n - 1.
-inline std::vector<Index> all_indices(std::size_t n)
+inline Array<Index> all_indices(std::size_t n)
 {
-  std::vector<Index> indices(n);
+  Array<Index> indices(n);
   for (std::size_t i = 0; i < n; ++i)
     indices[i] = Index(i);
   return indices;
@@ -78,10 +80,14 @@ constexpr double smallest_extent = 1e-150;
 // largest_coordinate, or on a nonzero extent below smallest_extent: the Kd
 // tree and every distance would be meaningless.
 template <typename Iterator, typename PointMap>
-std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, PointMap point_map)
+Array<Working_point> copy_finite_points(Iterator first, Iterator beyond, PointMap point_map)
 {
   auto in_range = [](double c) { return std::abs(c) <= largest_coordinate; }; // false for NaN
-  std::vector<Working_point> points;
+  Array<Working_point> points;
+  // reserved, so that a large range is copied without growing by doubling
+  if constexpr (std::is_base_of<std::forward_iterator_tag,
+                                typename std::iterator_traits<Iterator>::iterator_category>::value)
+    points.reserve(std::size_t(std::distance(first, beyond)));
   double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   for (Iterator it = first; it != beyond; ++it)
   {
@@ -113,9 +119,9 @@ std::vector<Working_point> copy_finite_points(Iterator first, Iterator beyond, P
 }
 
 // The indices of the points in input order.
-inline std::vector<Index> indices_by_input_position(const Indexed_points& points)
+inline Array<Index> indices_by_input_position(const Indexed_points& points)
 {
-  std::vector<Index> by_input(points.size());
+  Array<Index> by_input(points.size());
   for (Index i = 0; i < Index(points.size()); ++i)
     by_input[points.input_position[i]] = i;
   return by_input;
@@ -175,15 +181,15 @@ void sort_in_kd_order(Positioned_point* first, Positioned_point* beyond)
 // memory, and a Point_tree on any of the points follows those halves
 // without a sort of its own.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
-Indexed_points sort_spatially(std::vector<Working_point> points_in_input_order)
+Indexed_points sort_spatially(Array<Working_point> points_in_input_order)
 {
   // sorted with their input positions rather than through them, so that the
   // sort reads memory in order
-  std::vector<Positioned_point> sorted;
+  Array<Positioned_point> sorted;
   sorted.reserve(points_in_input_order.size());
   for (std::size_t i = 0; i < points_in_input_order.size(); ++i)
     sorted.emplace_back(points_in_input_order[i], Index(i));
-  std::vector<Working_point>().swap(points_in_input_order);
+  Array<Working_point>().swap(points_in_input_order);
   sort_in_kd_order<ConcurrencyTag>(sorted.data(), sorted.data() + sorted.size());
 
   Indexed_points result;

@@ -9,6 +9,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LEVEL_CELLS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LEVEL_CELLS_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
@@ -16,7 +17,6 @@
 #include <cstdint>
 #include <limits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -54,7 +54,7 @@ public:
   // present. The sums of the cells start in input order, and a join adds
   // one cell's sums to the other's: they follow the order of the joins,
   // not the internal order, and no pass over every point is needed later.
-  Level_cells(const Indexed_points& points, const std::vector<Index>& by_input, std::vector<Index> site)
+  Level_cells(const Indexed_points& points, const Array<Index>& by_input, Array<Index> site)
     : m_parent(std::move(site)), m_sum(points.size(), Sum{ 0., 0., 0., 0. }), m_slot(points.size(), no_slot)
   {
     for (Index i : by_input)
@@ -73,11 +73,11 @@ public:
   // the cell's centroid, among it and the `stage_removed` points (in
   // removal order): a site that leaves takes the place, in `stage_removed`,
   // of the point that replaces it. Returns the points that became present.
-  std::vector<Index> move_toward_centroids(const Indexed_points& points, const std::vector<Index>& sites,
-                                           std::vector<char>& present, std::vector<Index>& stage_removed)
+  Array<Index> move_toward_centroids(const Indexed_points& points, const Array<Index>& sites,
+                                           Array<char>& present, Array<Index>& stage_removed)
   {
-    std::vector<Working_point> centroid;
-    std::vector<Neighbor> best;
+    Array<Working_point> centroid;
+    Array<Neighbor> best;
     centroid.reserve(sites.size());
     best.reserve(sites.size());
     for (Index s : sites)
@@ -95,7 +95,7 @@ public:
         if (candidate < best[slot])
           best[slot] = candidate;
       }
-    std::vector<Index> arrived;
+    Array<Index> arrived;
     for (Index& r : stage_removed)
       if (const Index slot = m_slot[cell_of(r)]; slot != no_slot && best[slot].id == r)
       {
@@ -127,9 +127,9 @@ private:
     return i;
   }
 
-  std::vector<Index> m_parent;
-  std::vector<Sum> m_sum;    // by cell root
-  std::vector<Index> m_slot; // by cell root, the rank of its present point among the sites, while relocating
+  Array<Index> m_parent;
+  Array<Sum> m_sum;    // by cell root
+  Array<Index> m_slot; // by cell root, the rank of its present point among the sites, while relocating
 };
 
 } // namespace internal

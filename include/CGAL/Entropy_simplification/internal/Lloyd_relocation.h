@@ -7,6 +7,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LLOYD_RELOCATION_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LLOYD_RELOCATION_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <limits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -26,15 +26,15 @@ namespace internal {
 // input position).
 struct Voronoi_cells
 {
-  std::vector<Index> sites;    // the present points, by index
-  std::vector<Index> site_of;  // for each point, the rank of its site in `sites`
+  Array<Index> sites;    // the present points, by index
+  Array<Index> site_of;  // for each point, the rank of its site in `sites`
 };
 
 template <typename ConcurrencyTag>
-Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char>& present)
+Voronoi_cells voronoi_cells(const Indexed_points& points, const Array<char>& present)
 {
   Voronoi_cells cells;
-  std::vector<Index>& rank = cells.site_of; // the rank of each site, filled in first
+  Array<Index>& rank = cells.site_of; // the rank of each site, filled in first
   rank.assign(points.size(), 0);
   for (Index i = 0; i < Index(points.size()); ++i)
     if (present[i])
@@ -59,8 +59,8 @@ Voronoi_cells voronoi_cells(const Indexed_points& points, const std::vector<char
 // members[first[c], first[c + 1]).
 struct Cell_members
 {
-  std::vector<std::size_t> first;
-  std::vector<Index> members;
+  Array<std::size_t> first;
+  Array<Index> members;
 };
 
 // Counted into place by cell, then sorted by input position within each
@@ -74,7 +74,7 @@ Cell_members members_by_cell(const Indexed_points& points, const Voronoi_cells& 
     ++result.first[c + 1];
   for (std::size_t c = 0; c < cells.sites.size(); ++c)
     result.first[c + 1] += result.first[c];
-  std::vector<std::size_t> next(result.first.begin(), result.first.end() - 1);
+  Array<std::size_t> next(result.first.begin(), result.first.end() - 1);
   result.members.resize(points.size());
   for (Index i = 0; i < Index(points.size()); ++i)
     result.members[next[cells.site_of[i]]++] = i;
@@ -109,10 +109,10 @@ inline Index member_nearest_centroid(const Indexed_points& points, const Index* 
 
 // The member of each cell nearest its centroid, as the new present points.
 template <typename ConcurrencyTag>
-std::vector<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells)
+Array<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells)
 {
   const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
-  std::vector<Index> chosen(cells.sites.size());
+  Array<Index> chosen(cells.sites.size());
   for_each_index<ConcurrencyTag>(
     cells.sites.size(),
     [&](std::size_t c) {
@@ -120,7 +120,7 @@ std::vector<char> members_nearest_centroids(const Indexed_points& points, const 
                                           cell.members.data() + cell.first[c + 1]);
     },
     [](std::size_t) { return true; });
-  std::vector<char> present(points.size(), 0);
+  Array<char> present(points.size(), 0);
   for (Index i : chosen)
     present[i] = 1;
   return present;
@@ -132,15 +132,15 @@ std::vector<char> members_nearest_centroids(const Indexed_points& points, const 
 // Returns the pairs (point no longer present, point present instead), both
 // taken in input order.
 template <typename ConcurrencyTag>
-std::vector<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points,
-                                                            std::vector<char>& present, int iterations)
+Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points,
+                                                            Array<char>& present, int iterations)
 {
-  const std::vector<char> before = present;
-  const std::vector<Index> by_input = indices_by_input_position(points);
+  const Array<char> before = present;
+  const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
     present = members_nearest_centroids<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present));
 
-  std::vector<Index> gone, come;
+  Array<Index> gone, come;
   for (Index i : by_input)
   {
     if (before[i] && !present[i])
@@ -148,7 +148,7 @@ std::vector<std::pair<Index, Index> > relocate_within_input(const Indexed_points
     if (!before[i] && present[i])
       come.push_back(i);
   }
-  std::vector<std::pair<Index, Index> > swaps;
+  Array<std::pair<Index, Index> > swaps;
   for (std::size_t j = 0; j < gone.size(); ++j)
     swaps.emplace_back(gone[j], come[j]);
   return swaps;

@@ -7,6 +7,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_PAPER_SIMPLIFICATION_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_heap.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
@@ -16,7 +17,6 @@
 
 #include <cstddef>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -63,7 +63,7 @@ public:
           n, [&](std::size_t i) { refresh_angle(Index(i)); }, report(0.5, 0.3)))
       return false;
 
-    std::vector<Indexed_heap::Entry> entries(n);
+    Array<Indexed_heap::Entry> entries(n);
     if (!for_each_index<ConcurrencyTag>(
           n,
           [&](std::size_t i) {
@@ -96,9 +96,9 @@ public:
 
   // The normals of the points `subset`, as `normal` gives them.
   template <typename ConcurrencyTag>
-  std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const
+  Array<Working_vector> normals_of(const Array<Index>& subset) const
   {
-    std::vector<Working_vector> normals(subset.size());
+    Array<Working_vector> normals(subset.size());
     for_each_index<ConcurrencyTag>(
       subset.size(), [&](std::size_t r) { normals[r] = normal(subset[r]); }, [](std::size_t) { return true; });
     return normals;
@@ -153,10 +153,10 @@ private:
   const Options m_options;
   const Working_vector m_reference;
   Decremental_knn m_knn;
-  std::vector<Angle_term> m_angles;
+  Array<Angle_term> m_angles;
   Indexed_heap m_heap{ {}, 0 };
-  std::vector<Index> m_changed;
-  std::vector<Index> m_mark; // removal at which a point's importance was last refreshed
+  Array<Index> m_changed;
+  Array<Index> m_mark; // removal at which a point's importance was last refreshed
   Index m_epoch = 0;
 };
 

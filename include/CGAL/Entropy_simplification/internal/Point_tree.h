@@ -7,6 +7,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_POINT_TREE_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -21,7 +22,6 @@
 #include <limits>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -83,7 +83,7 @@ public:
   // rounded distance to a box never exceeds the rounded distance to a point
   // inside it, so ties at that distance are still considered and the order
   // is exact.
-  void nearest(Index q, std::size_t count, std::vector<Neighbor>& best) const
+  void nearest(Index q, std::size_t count, Array<Neighbor>& best) const
   {
     best.clear();
     Best_list list{ count, best };
@@ -103,7 +103,7 @@ public:
 
   // Records the largest of `scales` in each node, for `within_reach`.
   // Children follow their parent in m_nodes: a backward pass sees them first.
-  void record_largest_scales(const std::vector<double>& scales)
+  void record_largest_scales(const Array<double>& scales)
   {
     m_largest_scale.assign(m_nodes.size(), 0.);
     for (std::size_t n = m_nodes.size(); n-- > 0;)
@@ -121,8 +121,8 @@ public:
   // (`scale` + `scales[j]`) of `center`, possibly with a few more at that
   // distance, in no particular order; a node is skipped at the reach of its
   // own largest scale. `scales` must be those recorded.
-  void within_reach(const Working_point& center, double radius, double scale, const std::vector<double>& scales,
-                    std::vector<Index>& inside) const
+  void within_reach(const Working_point& center, double radius, double scale, const Array<double>& scales,
+                    Array<Index>& inside) const
   {
     inside.clear();
     if (!m_order.empty())
@@ -233,7 +233,7 @@ private:
   struct Best_list
   {
     std::size_t count;
-    std::vector<Neighbor>& list;
+    Array<Neighbor>& list;
     double bound() const
     {
       return list.size() < count ? std::numeric_limits<double>::infinity() : list.back().squared_distance;
@@ -285,7 +285,7 @@ private:
 
   // The reach is widened by 1e-9 so that rounding never loses a point at it.
   void search_within_reach(std::size_t n, const Working_point& center, double radius, double scale,
-                           const std::vector<double>& scales, std::vector<Index>& inside) const
+                           const Array<double>& scales, Array<Index>& inside) const
   {
     const Node& node = m_nodes[n];
     const double node_reach = radius * (scale + m_largest_scale[n]) * (1. + 1e-9);
@@ -308,7 +308,7 @@ private:
 
   // The candidate moves up from the end of the list: the lists are short,
   // and a linear walk costs less than a binary search's mispredicted branches.
-  static void keep_if_better(const Neighbor& candidate, std::size_t count, std::vector<Neighbor>& best)
+  static void keep_if_better(const Neighbor& candidate, std::size_t count, Array<Neighbor>& best)
   {
     std::size_t slot = best.size();
     if (slot == count)
@@ -325,24 +325,24 @@ private:
   }
 
   const Indexed_points& m_points;
-  std::vector<Index> m_order; // the tree's points in index order, each node's contiguous
-  std::vector<Node> m_nodes;
-  std::vector<char> m_removed; // empty until a removal
-  std::vector<double> m_largest_scale; // of each node, for within_reach
+  Array<Index> m_order; // the tree's points in index order, each node's contiguous
+  Array<Node> m_nodes;
+  Array<char> m_removed; // empty until a removal
+  Array<double> m_largest_scale; // of each node, for within_reach
 };
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest
 // first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
 // k points besides each query. Returns false when `progress` asked to stop.
 template <typename ConcurrencyTag, typename Progress>
-bool nearest_neighbor_table(const Point_tree& tree, const std::vector<Index>& queries, unsigned int k,
-                            std::vector<Index>& table, const Progress& progress)
+bool nearest_neighbor_table(const Point_tree& tree, const Array<Index>& queries, unsigned int k,
+                            Array<Index>& table, const Progress& progress)
 {
   table.resize(queries.size() * std::size_t(k));
   return for_each_index<ConcurrencyTag>(
     queries.size(),
     [&](std::size_t r) {
-      thread_local std::vector<Neighbor> best;
+      thread_local Array<Neighbor> best;
       tree.nearest(queries[r], k, best);
       for (unsigned int j = 0; j < k; ++j)
         table[r * k + j] = best[j].id;

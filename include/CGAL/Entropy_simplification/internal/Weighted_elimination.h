@@ -8,6 +8,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_WEIGHTED_ELIMINATION_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
@@ -23,7 +24,6 @@
 #include <limits>
 #include <optional>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -102,7 +102,7 @@ public:
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    std::vector<Index> knn;
+    Array<Index> knn;
     if (!nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) ||
         !compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, std::move(knn), m_field,
                                                    [&](double f) { return progress(0.5 + 0.5 * f); }))
@@ -115,7 +115,7 @@ public:
   bool is_present(Index i) const { return m_present[i] != 0; }
   // Makes the points of `present` the present ones, as many as before (the
   // relocation exchanges points).
-  void set_present(std::vector<char> present)
+  void set_present(Array<char> present)
   {
     m_present = std::move(present);
     m_listed = all_indices(m_points.size());
@@ -123,7 +123,7 @@ public:
   }
   // The normals of the points `subset`, as the field estimated them.
   template <typename ConcurrencyTag>
-  std::vector<Working_vector> normals_of(const std::vector<Index>& subset) const
+  Array<Working_vector> normals_of(const Array<Index>& subset) const
   {
     return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
   }
@@ -133,7 +133,7 @@ public:
   // (see level_boundary_below) and relocate each of them (see Level_cells),
   // so that the prefixes a ranking passes through are nearly as good as
   // direct calls'. `site[i]` is the present point nearest `i`.
-  void relocate_level_boundaries(std::vector<Index> site)
+  void relocate_level_boundaries(Array<Index> site)
   {
     m_level_cells.emplace(m_points, indices_by_input_position(m_points), std::move(site));
   }
@@ -150,7 +150,7 @@ public:
                                       m_field.effective_area)
                       : next_stage(m_count, target, m_field.effective_area);
       gather_neighbors<ConcurrencyTag>(stage);
-      std::vector<Index> stage_removed = eliminate<ConcurrencyTag>(stage);
+      Array<Index> stage_removed = eliminate<ConcurrencyTag>(stage);
       if (m_level_cells && stage.target > target)
         relocate_level<ConcurrencyTag>(stage_removed);
       for (Index p : stage_removed)
@@ -159,9 +159,9 @@ public:
     }
     // the relocation that follows needs none of the elimination's memory
     m_level_cells.reset();
-    std::vector<std::size_t>().swap(m_first);
-    std::vector<Index>().swap(m_neighbors);
-    std::vector<std::atomic<std::int64_t> >().swap(m_weight);
+    Array<std::size_t>().swap(m_first);
+    Array<Index>().swap(m_neighbors);
+    Array<std::atomic<std::int64_t> >().swap(m_weight);
     return true;
   }
 
@@ -193,8 +193,8 @@ private:
     const std::size_t n = m_points.size();
     m_first.assign(n + 1, 0);
     m_neighbors.clear();
-    std::vector<std::atomic<std::int64_t> >(n).swap(m_weight);
-    std::vector<std::vector<Index> > lists((std::min)(n, gather_block));
+    Array<std::atomic<std::int64_t> >(n).swap(m_weight);
+    Array<Array<Index> > lists((std::min)(n, gather_block));
     std::size_t gathered = 0;
     for (std::size_t first = 0; first < n; first += gather_block)
     {
@@ -203,7 +203,7 @@ private:
         count,
         [&](std::size_t r) {
           const Index i = Index(first + r);
-          thread_local std::vector<Index> inside;
+          thread_local Array<Index> inside;
           lists[r].clear();
           if (!is_present(i))
             return;
@@ -280,7 +280,7 @@ private:
   // sample does not bound.
   std::pair<std::optional<Key>, std::optional<Key> > likely_bounds(std::size_t count) const
   {
-    std::vector<Key> sample;
+    Array<Key> sample;
     for (std::size_t r = 0; r < m_listed.size(); r += sample_stride)
       sample.push_back(key(m_listed[r]));
     const double rank = double(count) / double(m_count) * double(sample.size());
@@ -305,8 +305,8 @@ private:
     const std::optional<Key>& low = bounds.first;
     const std::optional<Key>& high = bounds.second;
     const std::size_t blocks = key_blocks();
-    std::vector<std::size_t> before(blocks, 0);
-    std::vector<std::vector<Key> > between(blocks);
+    Array<std::size_t> before(blocks, 0);
+    Array<Array<Key> > between(blocks);
     for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
       const Key k = key(i);
       if (low && k < *low)
@@ -317,11 +317,11 @@ private:
     std::size_t first = 0;
     for (std::size_t b = 0; b < blocks; ++b)
       first += before[b];
-    std::vector<Key> keys;
-    for (std::vector<Key>& block : between)
+    Array<Key> keys;
+    for (Array<Key>& block : between)
     {
       keys.insert(keys.end(), block.begin(), block.end());
-      std::vector<Key>().swap(block);
+      Array<Key>().swap(block);
     }
     if (!(first < count && count <= first + keys.size()))
     {
@@ -336,21 +336,21 @@ private:
   // The key of the `count`-th present point in the order of removal, and
   // the points up to it, in index order.
   template <typename ConcurrencyTag>
-  std::pair<std::vector<Index>, Key> first_present(std::size_t count) const
+  std::pair<Array<Index>, Key> first_present(std::size_t count) const
   {
     const Key last = key_of_present<ConcurrencyTag>(count);
     const std::size_t blocks = key_blocks();
-    std::vector<std::vector<Index> > listed(blocks);
+    Array<Array<Index> > listed(blocks);
     for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
       if (!(last < key(i)))
         listed[b].push_back(i);
     });
-    std::vector<Index> first;
+    Array<Index> first;
     first.reserve(count);
-    for (std::vector<Index>& block : listed)
+    for (Array<Index>& block : listed)
     {
       first.insert(first.end(), block.begin(), block.end());
-      std::vector<Index>().swap(block);
+      Array<Index>().swap(block);
     }
     return { std::move(first), last };
   }
@@ -367,11 +367,11 @@ private:
   // their neighbours' weights can be lowered in parallel, exactly, in
   // integers.
   template <typename ConcurrencyTag>
-  void remove_local_firsts(std::vector<Index>& candidates, const Key& threshold, const Elimination_stage& stage,
-                           std::vector<Removal>& removals)
+  void remove_local_firsts(Array<Index>& candidates, const Key& threshold, const Elimination_stage& stage,
+                           Array<Removal>& removals)
   {
     enum Status : char { dropped, waiting, removable };
-    std::vector<char> status(candidates.size());
+    Array<char> status(candidates.size());
     for_each_index<ConcurrencyTag>(
       candidates.size(),
       [&](std::size_t r) {
@@ -416,9 +416,9 @@ private:
   // when it is taken, stays valid until no candidate comes before it: at
   // most as many points as removals left come before it.
   template <typename ConcurrencyTag>
-  std::vector<Index> eliminate(const Elimination_stage& stage)
+  Array<Index> eliminate(const Elimination_stage& stage)
   {
-    std::vector<Removal> removals;
+    Array<Removal> removals;
     removals.reserve(m_count - stage.target);
     while (m_count > stage.target)
     {
@@ -429,7 +429,7 @@ private:
     }
     sort_by<ConcurrencyTag>(removals.begin(), removals.end(),
                             [](const Removal& a, const Removal& b) { return a.key < b.key; });
-    std::vector<Index> order;
+    Array<Index> order;
     order.reserve(removals.size());
     for (const Removal& r : removals)
       order.push_back(r.id);
@@ -462,9 +462,9 @@ private:
   // their nearest present neighbours, and each cell's point moves toward
   // its centroid.
   template <typename ConcurrencyTag>
-  void relocate_level(std::vector<Index>& stage_removed)
+  void relocate_level(Array<Index>& stage_removed)
   {
-    std::vector<std::optional<Index> > site(stage_removed.size());
+    Array<std::optional<Index> > site(stage_removed.size());
     for_each_index<ConcurrencyTag>(
       stage_removed.size(), [&](std::size_t r) { site[r] = nearest_present_neighbor(stage_removed[r]); },
       [](std::size_t) { return true; });
@@ -472,7 +472,7 @@ private:
       if (site[r])
         m_level_cells->join(stage_removed[r], *site[r]);
     list_present();
-    const std::vector<Index> arrived =
+    const Array<Index> arrived =
       m_level_cells->move_toward_centroids(m_points, m_listed, m_present, stage_removed);
     list_present();
     const std::size_t stayed = m_listed.size();
@@ -490,12 +490,12 @@ private:
   const unsigned int m_k;
   const Options m_options;
   Elimination_field m_field;
-  std::vector<char> m_present;
+  Array<char> m_present;
   std::size_t m_count;
   // the present points in index order, listed after the initialisation, so
   // that choosing each round's candidates reads only them; the points
   // removed since are dropped between rounds
-  std::vector<Index> m_listed;
+  Array<Index> m_listed;
   // the cells of a ranking's level boundaries, while it runs down to its level
   std::optional<Level_cells> m_level_cells;
   static constexpr std::size_t gather_block = std::size_t(1) << 15;
@@ -505,9 +505,9 @@ private:
   static constexpr std::size_t sample_stride = 16;
   // CSR offsets of each point's neighbours: 64-bit, as dense clouds can hold
   // more than 2^32 pairs within reach
-  std::vector<std::size_t> m_first;
-  std::vector<Index> m_neighbors;   // CSR neighbours
-  std::vector<std::atomic<std::int64_t> > m_weight;
+  Array<std::size_t> m_first;
+  Array<Index> m_neighbors;   // CSR neighbours
+  Array<std::atomic<std::int64_t> > m_weight;
 };
 
 } // namespace internal

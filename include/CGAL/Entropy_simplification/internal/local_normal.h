@@ -7,6 +7,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LOCAL_NORMAL_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 
 #include <CGAL/Monge_via_jet_fitting.h>
@@ -16,7 +17,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -80,7 +80,7 @@ template <typename PointAt>
 Working_vector jet_normal(std::size_t m, PointAt point)
 {
   using Fitting = CGAL::Monge_via_jet_fitting<Working_kernel, Working_kernel, CGAL::Eigen_svd>;
-  thread_local std::vector<Working_point> points;
+  thread_local Array<Working_point> points;
   points.clear();
   for (std::size_t i = 0; i < m; ++i)
     points.push_back(point(i));

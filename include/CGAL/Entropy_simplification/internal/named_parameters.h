@@ -7,6 +7,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_NAMED_PARAMETERS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_NAMED_PARAMETERS_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -17,7 +18,6 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -92,7 +92,7 @@ std::size_t requested_output_size(std::size_t n, const NamedParameters& np)
 // The points of a range, through the point map of the named parameters, in
 // input order and double precision (see copy_finite_points).
 template <typename PointRange, typename NamedParameters>
-std::vector<Working_point> working_points(const PointRange& points, const NamedParameters& np)
+Array<Working_point> working_points(const PointRange& points, const NamedParameters& np)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   return copy_finite_points(points.begin(), points.end(), NP_helper::get_const_point_map(points, np));

@@ -6,12 +6,12 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ORDER_BY_REMOVAL_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <iterator>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -19,9 +19,9 @@ namespace internal {
 
 // The iterators of a range, by position.
 template <typename Range>
-std::vector<typename Range::iterator> iterators_of(Range& range)
+Array<typename Range::iterator> iterators_of(Range& range)
 {
-  std::vector<typename Range::iterator> result;
+  Array<typename Range::iterator> result;
   for (auto it = range.begin(); it != range.end(); ++it)
     result.push_back(it);
   return result;
@@ -35,15 +35,15 @@ std::vector<typename Range::iterator> iterators_of(Range& range)
 // elements: the range stays a permutation of itself. Returns the position of
 // the first removed element.
 template <typename ConcurrencyTag, typename Iterator>
-std::size_t order_by_removal(const std::vector<Iterator>& at, const std::vector<Index>& removed)
+std::size_t order_by_removal(const Array<Iterator>& at, const Array<Index>& removed)
 {
   const std::size_t n = at.size();
-  std::vector<char> is_removed(n, 0);
+  Array<char> is_removed(n, 0);
   for (Index i : removed)
     is_removed[i] = 1;
 
   // source[j]: the input position of the element that goes to position j
-  std::vector<Index> source;
+  Array<Index> source;
   source.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
     if (!is_removed[i])
@@ -53,7 +53,7 @@ std::size_t order_by_removal(const std::vector<Iterator>& at, const std::vector<
 
   // Moved out in their new order, then back: the reads are scattered, the
   // writes are not, and the moves back are independent of each other.
-  std::vector<typename std::iterator_traits<Iterator>::value_type> moved;
+  Array<typename std::iterator_traits<Iterator>::value_type> moved;
   moved.reserve(n);
   for (Index s : source)
     moved.push_back(std::move(*at[s]));

@@ -13,7 +13,6 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -23,9 +22,9 @@ namespace internal {
 // the plane fitted by orthogonal total least squares to all the points (Eq. 3),
 // i.e. the eigenvector of the smallest eigenvalue of their covariance. The
 // points come in input order so that the fit does not depend on how the
-// package reorders them internally.
-inline Working_vector reference_normal(const Options& options,
-                                       const std::vector<Working_point>& points_in_input_order)
+// package reorders them internally: any range of Working_point.
+template <typename WorkingPoints>
+Working_vector reference_normal(const Options& options, const WorkingPoints& points_in_input_order)
 {
   Working_vector normal;
   if (options.reference_normal)

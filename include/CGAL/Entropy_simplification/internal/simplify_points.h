@@ -9,6 +9,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_SIMPLIFY_POINTS_H
 
 #include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Lloyd_relocation.h>
@@ -20,7 +21,6 @@
 #include <functional>
 #include <optional>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -43,7 +43,7 @@ struct Engine_run
 {
   bool initialized = false;
   bool completed = false;
-  std::vector<Index> removed;
+  Array<Index> removed;
 };
 
 // Initialises an engine and removes points down to `target`. The callback
@@ -68,9 +68,9 @@ Engine_run run_engine(Engine& engine, std::size_t n, std::size_t target, const s
 }
 
 // Which points an engine's run left present.
-inline std::vector<char> present_after(const Engine_run& run, std::size_t n)
+inline Array<char> present_after(const Engine_run& run, std::size_t n)
 {
-  std::vector<char> present(n, 1);
+  Array<char> present(n, 1);
   for (Index i : run.removed)
     present[i] = 0;
   return present;
@@ -81,8 +81,8 @@ inline std::vector<char> present_after(const Engine_run& run, std::size_t n)
 template <typename ConcurrencyTag>
 void relocate(const Indexed_points& points, Engine_run& run)
 {
-  std::vector<char> present = present_after(run, points.size());
-  std::vector<Index> rank(points.size(), 0);
+  Array<char> present = present_after(run, points.size());
+  Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
   for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations))
@@ -92,12 +92,12 @@ void relocate(const Indexed_points& points, Engine_run& run)
 // For each point, the present point nearest it (ties by input position):
 // itself when present.
 template <typename ConcurrencyTag>
-std::vector<Index> nearest_present_points(const Indexed_points& points, const std::vector<char>& present)
+Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present)
 {
   if (std::find(present.begin(), present.end(), 0) == present.end())
     return all_indices(points.size());
   const Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(points, present);
-  std::vector<Index> site(points.size());
+  Array<Index> site(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     site[i] = cells.sites[cells.site_of[i]];
   return site;
@@ -113,7 +113,7 @@ template <typename ConcurrencyTag>
 bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
                         const std::function<bool(double)>& callback)
 {
-  const std::vector<char> present = present_after(run, points.size());
+  const Array<char> present = present_after(run, points.size());
   engine.relocate_level_boundaries(nearest_present_points<ConcurrencyTag>(points, present));
   engine.set_present(present);
   const bool whole_run = run.removed.empty();
@@ -130,21 +130,21 @@ bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& poin
 // Writes the normal of each present point when `with_normals`, and returns
 // the removals as positions in the points given to `sort_spatially`.
 template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
-std::vector<Index> finish(const Engine& engine, const Indexed_points& points, const Engine_run& run,
+Array<Index> finish(const Engine& engine, const Indexed_points& points, const Engine_run& run,
                           bool with_normals, const NormalWriter& write_normal)
 {
   if (with_normals)
   {
-    const std::vector<char> present = present_after(run, points.size());
-    std::vector<Index> kept;
+    const Array<char> present = present_after(run, points.size());
+    Array<Index> kept;
     for (Index i = 0; i < Index(points.size()); ++i)
       if (present[i])
         kept.push_back(i);
-    const std::vector<Working_vector> normals = engine.template normals_of<ConcurrencyTag>(kept);
+    const Array<Working_vector> normals = engine.template normals_of<ConcurrencyTag>(kept);
     for (std::size_t r = 0; r < kept.size(); ++r)
       write_normal(points.input_position[kept[r]], normals[r]);
   }
-  std::vector<Index> removed;
+  Array<Index> removed;
   removed.reserve(run.removed.size());
   for (Index i : run.removed)
     removed.push_back(points.input_position[i]);
@@ -158,7 +158,7 @@ std::vector<Index> finish(const Engine& engine, const Indexed_points& points, co
 // removals are exactly progressive, so its run through the kept points is
 // one run down to its last k + 1 points.
 template <typename ConcurrencyTag, typename NormalWriter>
-std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_point>&& points, unsigned int k,
+std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& points, unsigned int k,
                                                             std::size_t target, Run_extent extent,
                                                             const Options& options,
                                                             const std::function<bool(double)>& callback,
@@ -201,7 +201,7 @@ std::optional<std::vector<Index> > simplify_distinct_points(std::vector<Working_
 // sorted, their input positions during the run. `write_normal(position,
 // normal)` receives the normal of each kept point when `with_normals`.
 template <typename ConcurrencyTag, typename NormalWriter>
-std::optional<std::vector<Index> > simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
+std::optional<Array<Index> > simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
                                                    Run_extent extent, const Options& options,
                                                    const std::function<bool(double)>& callback,
                                                    bool with_normals, const NormalWriter& write_normal)
@@ -209,7 +209,7 @@ std::optional<std::vector<Index> > simplify_points(Distinct_points&& distinct, u
   const std::size_t distinct_count = distinct.size();
   const bool through = extent == Run_extent::through_the_kept;
   const std::size_t kept_copies = !through && target > distinct_count ? target - distinct_count : 0;
-  std::vector<Index> removed;
+  Array<Index> removed;
   for (std::size_t c = distinct.copies.size(); c-- > kept_copies;)
     removed.push_back(distinct.copies[c]);
   if (target >= distinct_count && !with_normals && !through)
@@ -217,21 +217,21 @@ std::optional<std::vector<Index> > simplify_points(Distinct_points&& distinct, u
 
   // The representatives' input positions are those of no copy: released
   // during the run, which has its peak of memory there, and listed again.
-  std::vector<Index>().swap(distinct.input_position);
-  std::vector<std::pair<Index, Working_vector> > normal_of_slot;
-  const std::optional<std::vector<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
+  Array<Index>().swap(distinct.input_position);
+  Array<std::pair<Index, Working_vector> > normal_of_slot;
+  const std::optional<Array<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
     std::move(distinct.points), k, (std::min)(target, distinct_count), extent, options, callback, with_normals,
     [&](Index slot, const Working_vector& normal) { normal_of_slot.emplace_back(slot, normal); });
   if (!removed_distinct)
     return std::nullopt;
-  const std::vector<Index> input_position = positions_of_no_copy(distinct.copies, distinct_count);
+  const Array<Index> input_position = positions_of_no_copy(distinct.copies, distinct_count);
   for (Index slot : *removed_distinct)
     removed.push_back(input_position[slot]);
   for (const auto& [slot, normal] : normal_of_slot)
     write_normal(input_position[slot], normal);
   if (kept_copies > 0)
   {
-    std::vector<Working_vector> normal_of_representative(distinct_count);
+    Array<Working_vector> normal_of_representative(distinct_count);
     for (const auto& [slot, normal] : normal_of_slot)
       normal_of_representative[slot] = normal;
     for (std::size_t c = 0; c < kept_copies; ++c)
