@@ -153,40 +153,58 @@ TEST_CASE("Point tree: any indices, in any order, on points in any order", "[poi
   }
 }
 
-TEST_CASE("Point tree: the points within a reach of both scales", "[point tree]")
+TEST_CASE("Point tree: the points within a reach of both scales, leaf by leaf", "[point tree]")
 {
-  const ESI::Indexed_points p = test_points();
-  const ESI::Array<ESI::Index> all = ESI::all_indices(p.size());
+  // in kd order, so that the leaves' boxes are apart and the search prunes
+  const ESI::Indexed_points unsorted = test_points();
+  ESI::Array<ESI::Working_point> input(unsorted.size());
+  for (std::size_t i = 0; i < unsorted.size(); ++i)
+    input[unsorted.input_position[i]] = unsorted.points[i];
+  const ESI::Indexed_points p = ESI::sort_spatially(input);
   ESI::Portable_random random(3);
   ESI::Array<double> scales;
+  // small on one side, large on the other, so that a leaf's reach depends
+  // on its neighbours' scales
   for (std::size_t i = 0; i < p.size(); ++i)
-    scales.push_back(0.5 + 1.5 * random.uniform());
-  ESI::Point_tree tree(p, all.begin(), all.end());
+    scales.push_back((p.points[i].x() < 6. ? 0.1 : 2.) * (1. + 0.5 * random.uniform()));
+  // a tree of two points in three, random and lattice ones, so that the
+  // leaves near a leaf hold points that are not in the tree
+  ESI::Array<ESI::Index> members;
+  for (ESI::Index i = 0; i < ESI::Index(p.size()); ++i)
+    if (i % 3 != 0)
+      members.push_back(i);
+  ESI::Point_tree tree(p, members.begin(), members.end());
   tree.record_largest_scales(scales);
-  ESI::Array<ESI::Index> inside;
   std::size_t found = 0;
   for (double radius : { 0.3, 1. })
-    for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 5)
-    {
-      tree.within_reach(p.points[q], radius, scales[q], scales, inside);
-      std::sort(inside.begin(), inside.end());
-      REQUIRE(std::adjacent_find(inside.begin(), inside.end()) == inside.end());
-      // every point strictly within the reach is found; any other found is
-      // at the reach within rounding
-      ESI::Array<ESI::Index> strictly;
-      for (ESI::Index j : all)
-      {
-        const double reach = radius * (scales[q] + scales[j]);
-        const double d2 = ESI::squared_distance(p.points[q], p.points[j]);
-        if (d2 < reach * reach)
-          strictly.push_back(j);
-        else if (std::binary_search(inside.begin(), inside.end(), j))
-          REQUIRE(d2 <= reach * reach * (1. + 1e-8));
-      }
-      REQUIRE(std::includes(inside.begin(), inside.end(), strictly.begin(), strictly.end()));
-      found += strictly.size();
-    }
-  CHECK(found > 20 * p.size() / 5); // the reaches hold many points
+  {
+    ESI::Array<ESI::Index> visited;
+    for (ESI::Index leaf : tree.leaves())
+      tree.within_reach_of_leaf(leaf, radius, scales, [&](ESI::Index q, const ESI::Array<ESI::Index>& found_inside) {
+        visited.push_back(q);
+        ESI::Array<ESI::Index> inside = found_inside;
+        std::sort(inside.begin(), inside.end());
+        REQUIRE(std::adjacent_find(inside.begin(), inside.end()) == inside.end());
+        // every member strictly within the reach is found; any other found
+        // is a member at the reach within rounding
+        ESI::Array<ESI::Index> strictly;
+        for (ESI::Index j : members)
+        {
+          const double reach = radius * (scales[q] + scales[j]);
+          const double d2 = ESI::squared_distance(p.points[q], p.points[j]);
+          if (d2 < reach * reach)
+            strictly.push_back(j);
+          else if (std::binary_search(inside.begin(), inside.end(), j))
+            REQUIRE(d2 <= reach * reach * (1. + 1e-8));
+        }
+        REQUIRE(std::includes(members.begin(), members.end(), inside.begin(), inside.end()));
+        REQUIRE(std::includes(inside.begin(), inside.end(), strictly.begin(), strictly.end()));
+        found += strictly.size();
+      });
+    // every member once, in index order
+    REQUIRE(visited == members);
+  }
+  CHECK(found > 10 * members.size()); // the reaches hold many points
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

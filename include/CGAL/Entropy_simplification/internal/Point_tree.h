@@ -101,7 +101,7 @@ public:
     return one.best.id;
   }
 
-  // Records the largest of `scales` in each node, for `within_reach`.
+  // Records the largest of `scales` in each node, for `within_reach_of_leaf`.
   // Children follow their parent in m_nodes: a backward pass sees them first.
   void record_largest_scales(const Array<double>& scales)
   {
@@ -117,16 +117,36 @@ public:
     }
   }
 
-  // Replaces `inside` by the points j of the tree within `radius` times
-  // (`scale` + `scales[j]`) of `center`, possibly with a few more at that
-  // distance, in no particular order; a node is skipped at the reach of its
-  // own largest scale. `scales` must be those recorded.
-  void within_reach(const Working_point& center, double radius, double scale, const Array<double>& scales,
-                    Array<Index>& inside) const
+  // The leaves, in index order.
+  Array<Index> leaves() const
   {
-    inside.clear();
+    Array<Index> result;
     if (!m_order.empty())
-      search_within_reach(0, center, radius, scale, scales, inside);
+      append_leaves(0, result);
+    return result;
+  }
+
+  // Calls `f(i, inside)` for each point i of the leaf `leaf` (one of
+  // leaves()), in index order, with `inside` the points j of the tree within
+  // `radius` times (`scales[i]` + `scales[j]`) of i, possibly with a few more
+  // at that distance, in no particular order. The leaves that can hold such
+  // points are found once for all the points of the leaf, a node being
+  // skipped at the reach of the two boxes' largest scales. `scales` must be
+  // those recorded.
+  template <typename Function>
+  void within_reach_of_leaf(Index leaf, double radius, const Array<double>& scales, const Function& f) const
+  {
+    thread_local Array<Index> near, inside;
+    near.clear();
+    search_leaves_within_reach(0, m_nodes[leaf], radius, m_largest_scale[leaf], near);
+    for (Index r = m_nodes[leaf].first; r < m_nodes[leaf].beyond; ++r)
+    {
+      const Index i = m_order[r];
+      inside.clear();
+      for (Index n : near)
+        append_within_reach(n, m_points.points[i], radius, scales[i], scales, inside);
+      f(i, static_cast<const Array<Index>&>(inside));
+    }
   }
 
   // Leaves `p` out of later searches; the boxes stay as they were.
@@ -284,23 +304,59 @@ private:
   }
 
   // The reach is widened by 1e-9 so that rounding never loses a point at it.
-  void search_within_reach(std::size_t n, const Working_point& center, double radius, double scale,
+  static double widened(double reach) { return reach * (1. + 1e-9); }
+
+  void append_leaves(Index n, Array<Index>& leaves) const
+  {
+    if (m_nodes[n].child == 0)
+      leaves.push_back(n);
+    else
+    {
+      append_leaves(m_nodes[n].child, leaves);
+      append_leaves(m_nodes[n].child + 1, leaves);
+    }
+  }
+
+  static double squared_distance_between_boxes(const Node& a, const Node& b)
+  {
+    double distance = 0.;
+    for (int d = 0; d < 3; ++d)
+    {
+      const double offset = a.high[d] < b.low[d] ? b.low[d] - a.high[d] : (b.high[d] < a.low[d] ? a.low[d] - b.high[d] : 0.);
+      distance += offset * offset;
+    }
+    return distance;
+  }
+
+  // Appends to `near` the leaves under node `n` that can hold a point within
+  // reach of a point of the box `box`, whose points' largest scale is `scale`.
+  void search_leaves_within_reach(Index n, const Node& box, double radius, double scale, Array<Index>& near) const
+  {
+    const Node& node = m_nodes[n];
+    const double reach = widened(radius * (scale + m_largest_scale[n]));
+    if (squared_distance_between_boxes(box, node) > reach * reach)
+      return;
+    if (node.child == 0)
+    {
+      near.push_back(n);
+      return;
+    }
+    search_leaves_within_reach(node.child, box, radius, scale, near);
+    search_leaves_within_reach(node.child + 1, box, radius, scale, near);
+  }
+
+  // Appends to `inside` the points of leaf `n` within reach of `center`.
+  void append_within_reach(Index n, const Working_point& center, double radius, double scale,
                            const Array<double>& scales, Array<Index>& inside) const
   {
     const Node& node = m_nodes[n];
-    const double node_reach = radius * (scale + m_largest_scale[n]) * (1. + 1e-9);
+    const double node_reach = widened(radius * (scale + m_largest_scale[n]));
     if (squared_distance_to_box(center, node) > node_reach * node_reach)
       return;
-    if (node.child != 0)
-    {
-      search_within_reach(node.child, center, radius, scale, scales, inside);
-      search_within_reach(node.child + 1, center, radius, scale, scales, inside);
-      return;
-    }
     for (Index r = node.first; r < node.beyond; ++r)
     {
       const Index i = m_order[r];
-      const double reach = radius * (scale + scales[i]) * (1. + 1e-9);
+      const double reach = widened(radius * (scale + scales[i]));
       if (!is_removed(i) && squared_distance(center, m_points.points[i]) <= reach * reach)
         inside.push_back(i);
     }
@@ -328,7 +384,7 @@ private:
   Array<Index> m_order; // the tree's points in index order, each node's contiguous
   Array<Node> m_nodes;
   Array<char> m_removed; // empty until a removal
-  Array<double> m_largest_scale; // of each node, for within_reach
+  Array<double> m_largest_scale; // of each node, for within_reach_of_leaf
 };
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest

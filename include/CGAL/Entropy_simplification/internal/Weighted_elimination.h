@@ -183,55 +183,63 @@ private:
   }
 
   // For each present point, the present points within its reach, in CSR
-  // form, and its weight. The points are taken by blocks of indices, each
-  // gathered in parallel then appended in index order, so that the lists in
-  // the making never hold more than a block.
+  // form, and its weight. The points are taken by blocks of leaves of the
+  // tree, each gathered in parallel then appended in index order, so that
+  // the lists in the making never hold more than a block.
   template <typename ConcurrencyTag>
   void gather_neighbors(const Elimination_stage& stage)
   {
     const Point_tree tree = present_tree<ConcurrencyTag>();
+    const Array<Index> leaves = tree.leaves();
     const std::size_t n = m_points.size();
     m_first.assign(n + 1, 0);
     m_neighbors.clear();
     Array<std::atomic<std::int64_t> >(n).swap(m_weight);
-    Array<Array<Index> > lists((std::min)(n, gather_block));
+    // for each leaf of a block, for each of its points: the point, the
+    // number of its neighbours, then them
+    Array<Array<Index> > lists((std::min)(leaves.size(), gather_block));
     std::size_t gathered = 0;
-    for (std::size_t first = 0; first < n; first += gather_block)
+    for (std::size_t first = 0; first < leaves.size(); first += gather_block)
     {
-      const std::size_t count = (std::min)(gather_block, n - first);
+      const std::size_t count = (std::min)(gather_block, leaves.size() - first);
       for_each_index<ConcurrencyTag>(
         count,
         [&](std::size_t r) {
-          const Index i = Index(first + r);
-          thread_local Array<Index> inside;
-          lists[r].clear();
-          if (!is_present(i))
-            return;
-          tree.within_reach(m_points.points[i], stage.radius, m_field.scale[i], m_field.scale, inside);
-          std::int64_t sum = 0;
-          for (Index j : inside)
-            if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
-            {
-              lists[r].push_back(j);
-              sum += w;
-            }
-          m_weight[i].store(sum, std::memory_order_relaxed);
+          Array<Index>& list = lists[r];
+          list.clear();
+          tree.within_reach_of_leaf(leaves[first + r], stage.radius, m_field.scale,
+                                    [&](Index i, const Array<Index>& inside) {
+                                      list.push_back(i);
+                                      list.push_back(0);
+                                      const std::size_t start = list.size();
+                                      std::int64_t sum = 0;
+                                      for (Index j : inside)
+                                        if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
+                                        {
+                                          list.push_back(j);
+                                          sum += w;
+                                        }
+                                      list[start - 1] = Index(list.size() - start);
+                                      m_weight[i].store(sum, std::memory_order_relaxed);
+                                    });
         },
         [](std::size_t) { return true; });
       const bool first_gathered = gathered == 0;
       for (std::size_t r = 0; r < count; ++r)
-      {
-        gathered += is_present(Index(first + r)) ? 1 : 0;
-        m_first[first + r + 1] = lists[r].size();
-        m_neighbors.insert(m_neighbors.end(), lists[r].begin(), lists[r].end());
-      }
+        for (const Index* entry = lists[r].data(); entry != lists[r].data() + lists[r].size(); entry += 2 + entry[1])
+        {
+          m_first[entry[0] + 1] = entry[1];
+          m_neighbors.insert(m_neighbors.end(), entry + 2, entry + 2 + entry[1]);
+          ++gathered;
+        }
       // the first points gathered predict the whole, so that the array
       // rarely grows by doubling, which would hold twice the memory at the
       // peak
       if (first_gathered && gathered > 0)
         m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(m_count) / double(gathered)));
     }
-    // counts to offsets: the lists were appended in index order
+    // counts to offsets: the lists were appended in index order, with none
+    // for the points not present
     for (std::size_t i = 0; i < n; ++i)
       m_first[i + 1] += m_first[i];
   }
@@ -498,7 +506,9 @@ private:
   Array<Index> m_listed;
   // the cells of a ranking's level boundaries, while it runs down to its level
   std::optional<Level_cells> m_level_cells;
-  static constexpr std::size_t gather_block = std::size_t(1) << 15;
+  // leaves gathered in parallel before their lists are appended: about
+  // 30,000 points
+  static constexpr std::size_t gather_block = std::size_t(1) << 11;
   // the blocks of indices whose keys are read in parallel, and the stride
   // of the sample that bounds a threshold
   static constexpr std::size_t key_block = std::size_t(1) << 14;
