@@ -19,10 +19,16 @@ command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (a
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
   -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=ON -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
-cmake --build build-benchmark --target run_benchmark bench_duplicates bench_scale bench_lod entropy_simplify -j"$(nproc)"
+cmake --build build-benchmark --target run_benchmark bench_quality_baseline bench_duplicates bench_scale bench_lod entropy_simplify -j"$(nproc)"
 mkdir -p "$out/results"
 rm -f "$out"/results/*.png "$out"/results/points/*.txt
 build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
+# Quality against the start of the speed work (issue 10), cell by cell; the
+# quick run's smaller inputs have no baseline.
+if [ -z "$mode" ]; then
+  build-benchmark/benchmark/bench_quality_baseline --baseline benchmark/results/quality_baseline.csv \
+    --current benchmark/results/quality.csv >> "$out/RESULTS.md"
+fi
 # Coincident points: one process per case, its section appended to RESULTS.md
 # (--smoke with --quick: the smaller cases, without the 220k reference).
 build-benchmark/benchmark/bench_duplicates ${mode:+--smoke} --append "$out/RESULTS.md"
