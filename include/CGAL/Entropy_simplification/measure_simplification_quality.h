@@ -77,18 +77,22 @@ inline double bounding_box_diagonal(const Array<Working_point>& points)
                    (high[2] - low[2]) * (high[2] - low[2]));
 }
 
-// The input points, then the kept ones, in one set: a tree of the kept ones
-// then answers the queries of both, ties going to the first kept point.
-inline Indexed_points input_then_kept(const Array<Working_point>& input, const Array<Working_point>& kept)
+// The input points, then the kept ones, in one set sorted in kd order, each
+// with its position in that concatenation: a tree of the kept ones (the
+// positions from the input's size on) then answers the queries of both, ties
+// going to the first kept point. Unsorted, the tree's boxes would overlap and
+// every search would visit most of the kept points.
+template <typename ConcurrencyTag>
+Indexed_points input_then_kept(const Array<Working_point>& input, const Array<Working_point>& kept)
 {
   if (input.size() + kept.size() >= std::size_t((std::numeric_limits<Index>::max)()))
     throw std::invalid_argument("measure_simplification_quality: the input and the kept points together must "
                                 "number fewer than 2^32 - 1");
-  Indexed_points all;
-  all.points = input;
-  all.points.insert(all.points.end(), kept.begin(), kept.end());
-  all.input_position = all_indices(all.points.size());
-  return all;
+  Array<Working_point> both;
+  both.reserve(input.size() + kept.size());
+  both.insert(both.end(), input.begin(), input.end());
+  both.insert(both.end(), kept.begin(), kept.end());
+  return sort_spatially<ConcurrencyTag>(std::move(both));
 }
 
 struct Local_plane
@@ -97,22 +101,24 @@ struct Local_plane
   Working_point centroid;
 };
 
-// The plane of each kept point (those of `all` from `first_kept` on), from
-// it and its nearest kept points.
+// The plane of each kept point, from it and its nearest kept points, by its
+// rank among the kept ones (its position in `all` less `input_size`).
 template <typename ConcurrencyTag>
-Array<Local_plane> kept_planes(const Indexed_points& all, std::size_t first_kept, const Point_tree& kept_tree)
+Array<Local_plane> kept_planes(const Indexed_points& all, const Array<Index>& kept_ids, std::size_t input_size,
+                               const Point_tree& kept_tree)
 {
-  const std::size_t m = all.size() - first_kept;
+  const std::size_t m = kept_ids.size();
   const std::size_t others = (std::min)(std::size_t(quality_plane_points), m) - 1;
   Array<Local_plane> planes(m);
   for_each_index<ConcurrencyTag>(
     m,
     [&](std::size_t r) {
       thread_local Array<Neighbor> near;
-      const Index c = Index(first_kept + r);
+      const Index c = kept_ids[r];
       kept_tree.nearest(c, others, near);
       auto point = [&](std::size_t j) -> const Working_point& { return all.points[j == 0 ? c : near[j - 1].id]; };
-      planes[r] = Local_plane{ pca_normal(others + 1, point), centroid_of(others + 1, point) };
+      planes[all.input_position[c] - input_size] = Local_plane{ pca_normal(others + 1, point),
+                                                                centroid_of(others + 1, point) };
     },
     [](std::size_t) { return true; });
   return planes;
@@ -202,23 +208,29 @@ measure_simplification_quality(const InputRange& input, const KeptRange& kept,
   report.diagonal = ES::bounding_box_diagonal(input_points);
 
   const std::size_t n = report.input_size;
-  const ES::Indexed_points all = ES::input_then_kept(input_points, kept_points);
-  ES::Array<ES::Index> kept_ids(report.kept_size);
-  for (std::size_t r = 0; r < kept_ids.size(); ++r)
-    kept_ids[r] = ES::Index(n + r);
+  const ES::Indexed_points all = ES::input_then_kept<ConcurrencyTag>(input_points, kept_points);
+  ES::Array<ES::Index> kept_ids;
+  kept_ids.reserve(report.kept_size);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all.input_position[i] >= n)
+      kept_ids.push_back(ES::Index(i));
   const ES::Point_tree kept_tree(all, kept_ids.begin(), kept_ids.end(), ConcurrencyTag());
   const bool has_planes = report.kept_size >= 3;
   const ES::Array<ES::Local_plane> planes =
-    has_planes ? ES::kept_planes<ConcurrencyTag>(all, n, kept_tree) : ES::Array<ES::Local_plane>();
+    has_planes ? ES::kept_planes<ConcurrencyTag>(all, kept_ids, n, kept_tree) : ES::Array<ES::Local_plane>();
 
+  // by input position, so that the sums below run in input order
   ES::Array<double> distance(n), plane_distance(n, 0.);
   ES::for_each_index<ConcurrencyTag>(
-    n,
+    all.size(),
     [&](std::size_t i) {
+      const std::size_t position = all.input_position[i];
+      if (position >= n)
+        return;
       const ES::Index nearest = kept_tree.nearest_one(ES::Index(i));
-      distance[i] = std::sqrt(ES::squared_distance(all.points[i], all.points[nearest]));
+      distance[position] = std::sqrt(ES::squared_distance(all.points[i], all.points[nearest]));
       if (has_planes)
-        plane_distance[i] = ES::distance_to_plane(all.points[i], planes[nearest - n]);
+        plane_distance[position] = ES::distance_to_plane(all.points[i], planes[all.input_position[nearest] - n]);
     },
     [](std::size_t) { return true; });
 
