@@ -372,10 +372,12 @@ std::string memory_table(const std::vector<Case>& cases, const std::vector<std::
   return s.str();
 }
 
-// "**met**" or "**missed**", and the measured figure against the target.
+// "**met**" or "**missed**", and the measured figure against the target,
+// to three decimals so that a figure just over its bound does not print as
+// equal to it.
 std::string verdict(double measured, double bound, const std::string& unit)
 {
-  return fixed(measured, 2) + unit + " (target ≤ " + fixed(bound, 2) + unit + "): " +
+  return fixed(measured, 3) + unit + " (target ≤ " + fixed(bound, 2) + unit + "): " +
          (measured <= bound ? "**met**" : "**missed**");
 }
 
