@@ -245,6 +245,42 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
         }
 }
 
+namespace {
+
+// The removals of an engine that gathers `leaves_per_block` leaves at a time.
+std::vector<ESI::Index> engine_removals(const ESI::Indexed_points& indexed, unsigned int k, std::size_t target,
+                                        std::size_t leaves_per_block)
+{
+  return test_parallel::on_two_threads_or_more([&] {
+    ESI::Weighted_elimination engine(indexed, k, ES::Options(), leaves_per_block);
+    REQUIRE(engine.initialize<test_parallel::Parallel_tag>([](double) { return true; }));
+    std::vector<ESI::Index> removed;
+    REQUIRE(engine.remove_down_to<test_parallel::Parallel_tag>(target, [&](ESI::Index p) {
+      removed.push_back(p);
+      return true;
+    }));
+    return removed;
+  });
+}
+
+} // namespace
+
+TEST_CASE("Default mode: the neighbour lists do not depend on how many leaves a block gathers",
+          "[default][reference]")
+{
+  // 20,000 points: one block holds all the tree's leaves, as on the clouds
+  // of the reference tests above; blocks of one leaf or seven append
+  // thousands of lists, in parallel, each at its own offset.
+  const test_clouds::Cloud cloud = fold(20000, 0.003, 13);
+  const ESI::Indexed_points indexed =
+    ESI::sort_spatially(ESI::Array<ESI::Working_point>(cloud.points.begin(), cloud.points.end()));
+  const std::size_t target = cloud.points.size() / 10;
+  const std::vector<ESI::Index> one_block = engine_removals(indexed, 10, target, std::size_t(1) << 20);
+  REQUIRE(one_block.size() == cloud.points.size() - target);
+  CHECK(engine_removals(indexed, 10, target, 1) == one_block);
+  CHECK(engine_removals(indexed, 10, target, 7) == one_block);
+}
+
 TEST_CASE("Default mode: weights round as std::llround does, halves and their neighbours included",
           "[default][reference]")
 {

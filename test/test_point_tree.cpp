@@ -14,6 +14,7 @@
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
 #include <algorithm>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -40,21 +41,20 @@ ESI::Indexed_points test_points()
 }
 
 // The first `count` points of `candidates` other than q, by (squared
-// distance, input position), by sorting them all.
+// distance, input position), by ordering them all on that key.
 ESI::Array<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates,
                                      ESI::Index q, std::size_t count)
 {
-  ESI::Array<ESI::Index> others;
+  std::vector<std::tuple<double, ESI::Index, ESI::Index> > keyed;
   for (ESI::Index i : candidates)
     if (i != q)
-      others.push_back(i);
-  std::sort(others.begin(), others.end(), [&](ESI::Index a, ESI::Index b) {
-    const double da = ESI::squared_distance(p.points[q], p.points[a]);
-    const double db = ESI::squared_distance(p.points[q], p.points[b]);
-    return da < db || (da == db && p.input_position[a] < p.input_position[b]);
-  });
-  others.resize((std::min)(count, others.size()));
-  return others;
+      keyed.emplace_back(ESI::squared_distance(p.points[q], p.points[i]), p.input_position[i], i);
+  const std::size_t first = (std::min)(count, keyed.size());
+  std::partial_sort(keyed.begin(), keyed.begin() + std::ptrdiff_t(first), keyed.end());
+  ESI::Array<ESI::Index> result;
+  for (std::size_t r = 0; r < first; ++r)
+    result.push_back(std::get<2>(keyed[r]));
+  return result;
 }
 
 ESI::Array<ESI::Index> ids(const ESI::Array<ESI::Neighbor>& best)

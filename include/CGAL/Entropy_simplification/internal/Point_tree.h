@@ -88,7 +88,7 @@ public:
     best.clear();
     Best_list list{ count, best };
     if (!m_order.empty() && count > 0)
-      search_nearest(0, q, list);
+      search_nearest(q, list);
   }
 
   // The first point of the tree other than `q` in the neighbour order of
@@ -97,7 +97,7 @@ public:
   Index nearest_one(Index q) const
   {
     Best_one one;
-    search_nearest(0, q, one);
+    search_nearest(q, one);
     return one.best.id;
   }
 
@@ -271,36 +271,60 @@ private:
     }
   };
 
-  // Visits the child whose box is nearer `q` first, then the other unless
-  // its box is farther than the bound.
+  // Depth first, the child whose box is nearer `q` first; the farther one
+  // waits, and is skipped if its box is then farther than the bound. The
+  // search is a loop rather than a recursion, which costs a call per level.
   template <typename Best>
-  void search_nearest(std::size_t n, Index q, Best& best) const
+  void search_nearest(Index q, Best& best) const
   {
-    const Node& node = m_nodes[n];
+    // each split halves an interval of indices, so no path is longer than
+    // 32 nodes, and at most one child per node of the path waits
+    struct Waiting
+    {
+      Index node;
+      double squared_distance;
+    };
+    Waiting waiting[64];
+    std::size_t waiting_count = 0;
     const Working_point& center = m_points.points[q];
-    if (node.child == 0)
+    Index n = 0;
+    for (;;)
     {
-      for (Index r = node.first; r < node.beyond; ++r)
+      const Node& node = m_nodes[n];
+      if (node.child == 0)
+        for (Index r = node.first; r < node.beyond; ++r)
+        {
+          const Index i = m_order[r];
+          const double distance = squared_distance(center, m_points.points[i]);
+          if (distance <= best.bound() && i != q && !is_removed(i))
+            best.offer(Neighbor{ distance, m_points.input_position[i], i });
+        }
+      else
       {
-        const Index i = m_order[r];
-        const double distance = squared_distance(center, m_points.points[i]);
-        if (distance <= best.bound() && i != q && !is_removed(i))
-          best.offer(Neighbor{ distance, m_points.input_position[i], i });
+        Index nearer = node.child, farther = node.child + 1;
+        double nearer_distance = squared_distance_to_box(center, m_nodes[nearer]);
+        double farther_distance = squared_distance_to_box(center, m_nodes[farther]);
+        if (farther_distance < nearer_distance)
+        {
+          std::swap(nearer, farther);
+          std::swap(nearer_distance, farther_distance);
+        }
+        if (farther_distance <= best.bound())
+          waiting[waiting_count++] = Waiting{ farther, farther_distance };
+        if (nearer_distance <= best.bound())
+        {
+          n = nearer;
+          continue;
+        }
       }
-      return;
+      do
+      {
+        if (waiting_count == 0)
+          return;
+        --waiting_count;
+      } while (waiting[waiting_count].squared_distance > best.bound());
+      n = waiting[waiting_count].node;
     }
-    Index first = node.child, second = node.child + 1;
-    double first_distance = squared_distance_to_box(center, m_nodes[first]);
-    double second_distance = squared_distance_to_box(center, m_nodes[second]);
-    if (second_distance < first_distance)
-    {
-      std::swap(first, second);
-      std::swap(first_distance, second_distance);
-    }
-    if (first_distance <= best.bound())
-      search_nearest(first, q, best);
-    if (second_distance <= best.bound())
-      search_nearest(second, q, best);
   }
 
   // The reach is widened by 1e-9 so that rounding never loses a point at it.

@@ -88,10 +88,15 @@ inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, 
 class Weighted_elimination
 {
 public:
-  Weighted_elimination(const Indexed_points& points, unsigned int k, const Options& options)
+  // A block of `leaves_per_block` leaves of the tree is gathered at a time
+  // (see gather_neighbors); the result does not depend on it. The default,
+  // about 30,000 points, keeps the lists in the making small.
+  Weighted_elimination(const Indexed_points& points, unsigned int k, const Options& options,
+                       std::size_t leaves_per_block = std::size_t(1) << 11)
     : m_points(points),
       m_k(k),
       m_options(options),
+      m_leaves_per_block((std::max)(std::size_t(1), leaves_per_block)),
       m_present(points.size(), 1),
       m_count(points.size())
   {}
@@ -195,53 +200,86 @@ private:
     m_first.assign(n + 1, 0);
     m_neighbors.clear();
     Array<std::atomic<std::int64_t> >(n).swap(m_weight);
-    // for each leaf of a block, for each of its points: the point, the
-    // number of its neighbours, then them
-    Array<Array<Index> > lists((std::min)(leaves.size(), gather_block));
-    std::size_t gathered = 0;
-    for (std::size_t first = 0; first < leaves.size(); first += gather_block)
+    Array<Leaf_list> lists((std::min)(leaves.size(), m_leaves_per_block));
+    for (std::size_t first = 0; first < leaves.size(); first += m_leaves_per_block)
     {
-      const std::size_t count = (std::min)(gather_block, leaves.size() - first);
+      const std::size_t count = (std::min)(m_leaves_per_block, leaves.size() - first);
       for_each_index<ConcurrencyTag>(
-        count,
-        [&](std::size_t r) {
-          Array<Index>& list = lists[r];
-          list.clear();
-          tree.within_reach_of_leaf(leaves[first + r], stage.radius, m_field.scale,
-                                    [&](Index i, const Array<Index>& inside) {
-                                      list.push_back(i);
-                                      list.push_back(0);
-                                      const std::size_t start = list.size();
-                                      std::int64_t sum = 0;
-                                      for (Index j : inside)
-                                        if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
-                                        {
-                                          list.push_back(j);
-                                          sum += w;
-                                        }
-                                      list[start - 1] = Index(list.size() - start);
-                                      m_weight[i].store(sum, std::memory_order_relaxed);
-                                    });
-        },
+        count, [&](std::size_t r) { gather_leaf(tree, leaves[first + r], stage, lists[r]); },
         [](std::size_t) { return true; });
-      const bool first_gathered = gathered == 0;
-      for (std::size_t r = 0; r < count; ++r)
-        for (const Index* entry = lists[r].data(); entry != lists[r].data() + lists[r].size(); entry += 2 + entry[1])
-        {
-          m_first[entry[0] + 1] = entry[1];
-          m_neighbors.insert(m_neighbors.end(), entry + 2, entry + 2 + entry[1]);
-          ++gathered;
-        }
-      // the first points gathered predict the whole, so that the array
-      // rarely grows by doubling, which would hold twice the memory at the
-      // peak
-      if (first_gathered && gathered > 0)
-        m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(m_count) / double(gathered)));
+      const bool first_block = first == 0;
+      append_lists<ConcurrencyTag>(lists, count);
+      // the first block predicts the whole, so that the array rarely grows
+      // by doubling, which would hold twice the memory at the peak
+      if (first_block)
+      {
+        std::size_t gathered = 0;
+        for (std::size_t r = 0; r < count; ++r)
+          gathered += lists[r].points;
+        if (gathered > 0)
+          m_neighbors.reserve(std::size_t(1.05 * double(m_neighbors.size()) * double(m_count) / double(gathered)));
+      }
     }
     // counts to offsets: the lists were appended in index order, with none
     // for the points not present
     for (std::size_t i = 0; i < n; ++i)
       m_first[i + 1] += m_first[i];
+  }
+
+  // The neighbours of the points of a leaf: for each point, the point, the
+  // number of its neighbours, then them.
+  struct Leaf_list
+  {
+    Array<Index> entries;
+    std::size_t points = 0;
+    std::size_t neighbors = 0;
+  };
+
+  // The list of a leaf of `tree`, and the weight of each of its points.
+  void gather_leaf(const Point_tree& tree, Index leaf, const Elimination_stage& stage, Leaf_list& list)
+  {
+    list.entries.clear();
+    list.points = 0;
+    tree.within_reach_of_leaf(leaf, stage.radius, m_field.scale, [&](Index i, const Array<Index>& inside) {
+      list.entries.push_back(i);
+      list.entries.push_back(0);
+      const std::size_t start = list.entries.size();
+      std::int64_t sum = 0;
+      for (Index j : inside)
+        if (const std::int64_t w = j != i ? weight(i, j, stage) : 0)
+        {
+          list.entries.push_back(j);
+          sum += w;
+        }
+      list.entries[start - 1] = Index(list.entries.size() - start);
+      ++list.points;
+      m_weight[i].store(sum, std::memory_order_relaxed);
+    });
+    list.neighbors = list.entries.size() - 2 * list.points;
+  }
+
+  // Appends the first `count` lists to the CSR neighbours, in parallel, each
+  // at its place in index order, and counts each point's neighbours in
+  // m_first.
+  template <typename ConcurrencyTag>
+  void append_lists(const Array<Leaf_list>& lists, std::size_t count)
+  {
+    Array<std::size_t> at(count + 1, m_neighbors.size());
+    for (std::size_t r = 0; r < count; ++r)
+      at[r + 1] = at[r] + lists[r].neighbors;
+    m_neighbors.resize(at[count]);
+    for_each_index<ConcurrencyTag>(
+      count,
+      [&](std::size_t r) {
+        const Array<Index>& entries = lists[r].entries;
+        Index* out = m_neighbors.data() + at[r];
+        for (const Index* entry = entries.data(); entry != entries.data() + entries.size(); entry += 2 + entry[1])
+        {
+          m_first[entry[0] + 1] = entry[1];
+          out = std::copy(entry + 2, entry + 2 + entry[1], out);
+        }
+      },
+      [](std::size_t) { return true; });
   }
 
   // A point's place in the order of removal: the greatest weight first,
@@ -497,6 +535,8 @@ private:
   const Indexed_points& m_points;
   const unsigned int m_k;
   const Options m_options;
+  // leaves gathered in parallel before their lists are appended
+  const std::size_t m_leaves_per_block;
   Elimination_field m_field;
   Array<char> m_present;
   std::size_t m_count;
@@ -506,9 +546,6 @@ private:
   Array<Index> m_listed;
   // the cells of a ranking's level boundaries, while it runs down to its level
   std::optional<Level_cells> m_level_cells;
-  // leaves gathered in parallel before their lists are appended: about
-  // 30,000 points
-  static constexpr std::size_t gather_block = std::size_t(1) << 11;
   // the blocks of indices whose keys are read in parallel, and the stride
   // of the sample that bounds a threshold
   static constexpr std::size_t key_block = std::size_t(1) << 14;
