@@ -20,7 +20,7 @@
 //   - the program, when --program is given: `entropy_simplify lion_N.ply
 //     OUT.ply --ratio 0.1 --binary -q`, read and write included.
 // Times are medians of R runs (3 by default) up to 1,000,000 points, one run
-// above. Peak: the process's maximum resident set size, input included.
+// above; the runs of one size go in rounds, each case once per round. Peak: the process's maximum resident set size, input included.
 // Invariants, checked after the peak is taken: exactly the count kept, the
 // range a permutation of the input, the same kept points with 1 and 2
 // threads, the program's output holding the count. The exit status is
@@ -280,34 +280,49 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-// Runs a case `runs` times, each in a process of its own: the median time,
-// the largest peak.
-void run_case(Case& c, int runs, const std::string& work, const std::string& program)
+// Runs a case once, in a process of its own, adding its time to `seconds`
+// and `read_seconds` and keeping the largest peak; false when it failed.
+bool run_once(Case& c, const std::string& work, const std::string& program, std::vector<double>& seconds,
+              std::vector<double>& read_seconds)
 {
   const std::string file = input_file(work, c.n);
-  std::vector<double> seconds, read_seconds;
+  const auto outcome = bench::run_in_child<Result>([&]() -> Result {
+    if (c.kind == Kind::pca)
+      return measure_pca(file);
+    if (c.kind == Kind::program)
+      return measure_program(program, file, work + "/out_" + std::to_string(c.n) + ".ply");
+    return measure_library(file, c.kind);
+  });
+  c.verdict = outcome.verdict;
+  if (c.verdict != "ok")
+    return false;
+  seconds.push_back(outcome.result.seconds);
+  read_seconds.push_back(outcome.result.read_seconds);
+  c.result = outcome.result;
+  c.peak_kib = (std::max)(c.peak_kib, outcome.result.peak_kib);
+  return true;
+}
+
+// Runs the cases of one size `runs` times in rounds, every case once per
+// round, so that a slow spell of this shared machine falls on all of them
+// rather than on one: each case's median time, its largest peak.
+void run_cases(std::vector<Case>& cases, int runs, const std::string& work, const std::string& program)
+{
+  std::vector<std::vector<double> > seconds(cases.size()), read_seconds(cases.size());
   for (int run = 0; run < runs; ++run)
+    for (std::size_t c = 0; c < cases.size(); ++c)
+      if (run == 0 || cases[c].verdict == "ok")
+        run_once(cases[c], work, program, seconds[c], read_seconds[c]);
+  for (std::size_t c = 0; c < cases.size(); ++c)
   {
-    const auto outcome = bench::run_in_child<Result>([&]() -> Result {
-      if (c.kind == Kind::pca)
-        return measure_pca(file);
-      if (c.kind == Kind::program)
-        return measure_program(program, file, work + "/out_" + std::to_string(c.n) + ".ply");
-      return measure_library(file, c.kind);
-    });
-    c.verdict = outcome.verdict;
-    if (c.verdict != "ok")
-      return;
-    seconds.push_back(outcome.result.seconds);
-    read_seconds.push_back(outcome.result.read_seconds);
-    c.result = outcome.result;
-    c.peak_kib = (std::max)(c.peak_kib, outcome.result.peak_kib);
+    if (cases[c].verdict != "ok")
+      continue;
+    cases[c].result.seconds = median(seconds[c]);
+    cases[c].result.read_seconds = median(read_seconds[c]);
+    const std::size_t expected = ES::internal::kept_count_from_percentage(cases[c].n, percentage);
+    if (cases[c].kind != Kind::pca && cases[c].result.kept != expected)
+      cases[c].verdict = thousands(cases[c].result.kept) + " kept instead of " + thousands(expected);
   }
-  c.result.seconds = median(seconds);
-  c.result.read_seconds = median(read_seconds);
-  const std::size_t expected = ES::internal::kept_count_from_percentage(c.n, percentage);
-  if (c.kind != Kind::pca && c.result.kept != expected)
-    c.verdict = thousands(c.result.kept) + " kept instead of " + thousands(expected);
 }
 
 const Case* find(const std::vector<Case>& cases, std::size_t n, Kind kind)
@@ -428,7 +443,8 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<std::size
        "`Sequential_tag`. *pca pass*: one `CGAL::pca_estimate_normals<Sequential_tag>` pass, k = 10, on the same "
        "points, after `CGAL::IO::read_PLY` (*read*). *Program*: `entropy_simplify lion_N.ply out.ply --ratio 0.1 "
        "--binary -q`, read and write included, against the read + pca pass. Times: "
-    << (runs > 1 ? "the median of " + std::to_string(runs) + " runs up to 1,000,000 points, one run above"
+    << (runs > 1 ? "the median of " + std::to_string(runs) +
+                     " runs up to 1,000,000 points, in rounds that run every case of a size once, one run above"
                  : std::string("one run"))
     << ". Peak: the maximum resident set size of the process (as `/usr/bin/time -v` reports it); for the library, "
        "less the copy of the input the check keeps, so the input range itself is counted.\n\n"
@@ -553,17 +569,16 @@ int main(int argc, char** argv)
         if (written.verdict != "ok")
           throw std::runtime_error("cannot write " + file + ": " + written.verdict);
       }
+      std::vector<Case> of_size;
       for (Kind kind : all_kinds)
+        if (kind != Kind::program || !program.empty())
+          of_size.push_back(Case{ n, kind, Result(), 0, "" });
+      run_cases(of_size, n <= 1000000 ? runs : 1, work, program);
+      for (const Case& c : of_size)
       {
-        if (kind == Kind::program && program.empty())
-          continue;
-        Case c;
-        c.n = n;
-        c.kind = kind;
-        run_case(c, n <= 1000000 ? runs : 1, work, program);
-        std::cerr << "bench_scale: " << thousands(n) << " points, " << kind_name(kind) << ": "
+        std::cerr << "bench_scale: " << thousands(n) << " points, " << kind_name(c.kind) << ": "
                   << fixed(c.result.seconds, 3) << " s"
-                  << (kind == Kind::pca ? " (read " + fixed(c.result.read_seconds, 3) + " s)" : std::string())
+                  << (c.kind == Kind::pca ? " (read " + fixed(c.result.read_seconds, 3) + " s)" : std::string())
                   << ", peak " << fixed(double(c.peak_kib) / 1024., 0) << " MiB: " << c.verdict << std::endl;
         cases.push_back(c);
       }
