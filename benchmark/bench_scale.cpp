@@ -20,7 +20,8 @@
 //   - the program, when --program is given: `entropy_simplify lion_N.ply
 //     OUT.ply --ratio 0.1 --binary -q`, read and write included.
 // Times are medians of R runs (3 by default) up to 1,000,000 points, one run
-// above; the runs of one size go in rounds, each case once per round. Peak: the process's maximum resident set size, input included.
+// above; the runs of one size go in rounds, each case once per round.
+// Peak: the process's maximum resident set size, input included.
 // Invariants, checked after the peak is taken: exactly the count kept, the
 // range a permutation of the input, the same kept points with 1 and 2
 // threads, the program's output holding the count. The exit status is
@@ -281,8 +282,9 @@ double median(std::vector<double> v)
 }
 
 // Runs a case once, in a process of its own, adding its time to `seconds`
-// and `read_seconds` and keeping the largest peak; false when it failed.
-bool run_once(Case& c, const std::string& work, const std::string& program, std::vector<double>& seconds,
+// and `read_seconds` and keeping the largest peak, unless it failed (its
+// verdict then says why).
+void run_once(Case& c, const std::string& work, const std::string& program, std::vector<double>& seconds,
               std::vector<double>& read_seconds)
 {
   const std::string file = input_file(work, c.n);
@@ -295,12 +297,11 @@ bool run_once(Case& c, const std::string& work, const std::string& program, std:
   });
   c.verdict = outcome.verdict;
   if (c.verdict != "ok")
-    return false;
+    return;
   seconds.push_back(outcome.result.seconds);
   read_seconds.push_back(outcome.result.read_seconds);
   c.result = outcome.result;
   c.peak_kib = (std::max)(c.peak_kib, outcome.result.peak_kib);
-  return true;
 }
 
 // Runs the cases of one size `runs` times in rounds, every case once per
