@@ -103,7 +103,7 @@ std::size_t position_of(const Positions& positions, const Coordinates& c)
 }
 
 // What a call did to a range.
-struct Run
+struct Range_run
 {
   std::size_t kept = 0;
   std::vector<std::size_t> order;   // the input position of each element, after the call
@@ -111,7 +111,7 @@ struct Run
   bool nothing_else_written = true; // no normal written to a removed point
 };
 
-bool is_permutation_of_input(const Run& run)
+bool is_permutation_of_input(const Range_run& run)
 {
   std::vector<std::size_t> sorted = run.order, identity(input_size);
   std::sort(sorted.begin(), sorted.end());
@@ -139,7 +139,7 @@ struct Normal_by_coordinates
 
 // std::vector<Point_3>, number_of_output_points, a normal map keyed by point.
 template <typename K>
-Run simplify_vector(const std::vector<typename K::Point_3>& input, const ES::Options& options,
+Range_run simplify_vector(const std::vector<typename K::Point_3>& input, const ES::Options& options,
                     const Positions& positions)
 {
   std::vector<typename K::Point_3> points = input;
@@ -148,7 +148,7 @@ Run simplify_vector(const std::vector<typename K::Point_3>& input, const ES::Opt
     points, k,
     CGAL::parameters::number_of_output_points(kept_count).normal_map(Normal_by_coordinates<K>{ &normals }),
     options);
-  Run run;
+  Range_run run;
   run.kept = std::size_t(first_removed - points.begin());
   for (const auto& p : points)
     run.order.push_back(position_of(positions, coordinates_of(p)));
@@ -165,7 +165,7 @@ Run simplify_vector(const std::vector<typename K::Point_3>& input, const ES::Opt
 // std::vector<std::pair<Point_3, Vector_3> >, select_percentage, the points
 // and normals read and written through First_of_pair and Second_of_pair.
 template <typename K>
-Run simplify_pairs(const std::vector<typename K::Point_3>& input, const ES::Options& options,
+Range_run simplify_pairs(const std::vector<typename K::Point_3>& input, const ES::Options& options,
                    const Positions& positions)
 {
   using Pair = std::pair<typename K::Point_3, typename K::Vector_3>;
@@ -179,7 +179,7 @@ Run simplify_pairs(const std::vector<typename K::Point_3>& input, const ES::Opti
       .point_map(CGAL::First_of_pair_property_map<Pair>())
       .normal_map(CGAL::Second_of_pair_property_map<Pair>()),
     options);
-  Run run;
+  Range_run run;
   run.kept = std::size_t(first_removed - pairs.begin());
   for (std::size_t i = 0; i < pairs.size(); ++i)
   {
@@ -194,7 +194,7 @@ Run simplify_pairs(const std::vector<typename K::Point_3>& input, const ES::Opti
 
 // CGAL::Point_set_3<Point_3>, with its own normal map given as normal_map.
 template <typename K>
-Run simplify_point_set(const std::vector<typename K::Point_3>& input, const ES::Options& options,
+Range_run simplify_point_set(const std::vector<typename K::Point_3>& input, const ES::Options& options,
                        const Positions& positions)
 {
   const typename K::Vector_3 untouched(1, 2, 3);
@@ -204,7 +204,7 @@ Run simplify_point_set(const std::vector<typename K::Point_3>& input, const ES::
     set.insert(p, untouched);
   const auto first_removed = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
     set, k, CGAL::parameters::number_of_output_points(kept_count).normal_map(set.normal_map()), options);
-  Run run;
+  Range_run run;
   run.kept = std::size_t(std::distance(set.begin(), first_removed));
   std::size_t i = 0;
   for (auto it = set.begin(); it != set.end(); ++it, ++i)
@@ -284,13 +284,13 @@ TEMPLATE_TEST_CASE("Every public function on every kernel gives the Simple_carte
     INFO((mode == ES::Mode::paper ? "Mode::paper" : "Mode::weighted_elimination"));
     ES::Options options;
     options.mode = mode;
-    const Run reference = simplify_vector<Reference_kernel>(reference_input, options, positions);
+    const Range_run reference = simplify_vector<Reference_kernel>(reference_input, options, positions);
     REQUIRE(reference.kept == kept_count);
     REQUIRE(is_permutation_of_input(reference));
     REQUIRE(reference.normals.size() == kept_count);
     const std::vector<Coordinates> expected_normals = rounded_to<K>(reference.normals);
 
-    const std::pair<const char*, Run> runs[] = {
+    const std::pair<const char*, Range_run> runs[] = {
       { "std::vector<Point_3>", simplify_vector<K>(input, options, positions) },
       { "std::vector<std::pair<Point_3, Vector_3> >", simplify_pairs<K>(input, options, positions) },
       { "CGAL::Point_set_3<Point_3>", simplify_point_set<K>(input, options, positions) },
@@ -298,7 +298,7 @@ TEMPLATE_TEST_CASE("Every public function on every kernel gives the Simple_carte
     for (const auto& named : runs)
     {
       INFO(named.first);
-      const Run& run = named.second;
+      const Range_run& run = named.second;
       CHECK(run.kept == kept_count);
       CHECK(is_permutation_of_input(run));
       CHECK(differences(run.order, reference.order) == 0); // kept set and order, and the order of the removed

@@ -91,12 +91,7 @@ std::vector<Point> read_scan(const std::string& name)
   return points;
 }
 
-ES::Options paper_mode()
-{
-  ES::Options options;
-  options.mode = ES::Mode::paper;
-  return options;
-}
+using test_runs::paper_mode;
 
 } // namespace
 

@@ -35,18 +35,13 @@ using ES::internal::Angle_term;
 
 namespace {
 
-ES::Options paper_mode()
-{
-  ES::Options options;
-  options.mode = ES::Mode::paper;
-  return options;
-}
-
 using test_runs::kept_positions;
+using test_runs::paper_mode;
 using test_runs::Run;
 
 template <typename Tag = CGAL::Sequential_tag, typename NP>
-Run simplify(const std::vector<Point>& points, unsigned int k, const NP& np, const ES::Options& options = paper_mode())
+Run paper_simplify(const std::vector<Point>& points, unsigned int k, const NP& np,
+                   const ES::Options& options = paper_mode())
 {
   return test_runs::simplify<Tag>(points, k, np, options);
 }
@@ -199,14 +194,14 @@ TEST_CASE("Exactly the requested number of points is kept, as a subset, nothing 
                               std::size_t(1000), std::size_t(1999), std::size_t(2000), std::size_t(5000) })
   {
     INFO("target " << target);
-    const Run run = simplify(points, 10, CGAL::parameters::number_of_output_points(target));
+    const Run run = paper_simplify(points, 10, CGAL::parameters::number_of_output_points(target));
     CHECK(run.kept == (std::min)(target, points.size()));
     CHECK(is_permutation_of_input(run, points));
   }
   for (double percentage : { 0.55, 1., 7., 10., 33.3, 50., 99.99, 100. })
   {
     INFO("percentage " << percentage);
-    const Run run = simplify(points, 10, CGAL::parameters::select_percentage(percentage));
+    const Run run = paper_simplify(points, 10, CGAL::parameters::select_percentage(percentage));
     CHECK(run.kept == ES::internal::kept_count_from_percentage(points.size(), percentage));
     CHECK(is_permutation_of_input(run, points));
   }
@@ -246,10 +241,10 @@ TEST_CASE("A tiny percentage keeps one point in the default mode, and is an erro
 TEST_CASE("The removed points come last removed first: every prefix is a simplification", "[guarantees]")
 {
   const std::vector<Point> points = test_clouds::wavy_surface(1500, 0.005, 7).points;
-  const Run deep = simplify(points, 10, CGAL::parameters::number_of_output_points(40));
+  const Run deep = paper_simplify(points, 10, CGAL::parameters::number_of_output_points(40));
   for (std::size_t m : { std::size_t(40), std::size_t(41), std::size_t(300), std::size_t(1499) })
   {
-    const Run direct = simplify(points, 10, CGAL::parameters::number_of_output_points(m));
+    const Run direct = paper_simplify(points, 10, CGAL::parameters::number_of_output_points(m));
     std::set<std::size_t> prefix;
     for (std::size_t j = 0; j < m; ++j)
       prefix.insert(deep.order[j]);
@@ -268,7 +263,7 @@ TEST_CASE("A callback sees progress, and stopping leaves a valid partition", "[g
       seen.push_back(f);
       return true;
     };
-    simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(record));
+    paper_simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(record));
     REQUIRE(!seen.empty());
     CHECK(std::is_sorted(seen.begin(), seen.end()));
     CHECK(seen.front() >= 0.);
@@ -278,18 +273,18 @@ TEST_CASE("A callback sees progress, and stopping leaves a valid partition", "[g
   {
     const std::function<bool(double)> stop_at_half = [](double f) { return f < 0.6; };
     const Run stopped =
-      simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_at_half));
+      paper_simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_at_half));
     CHECK(is_permutation_of_input(stopped, points));
     CHECK(stopped.kept > 100);
     CHECK(stopped.kept < points.size());
     // What was kept is exactly what a run to that target keeps.
-    const Run direct = simplify(points, 10, CGAL::parameters::number_of_output_points(stopped.kept));
+    const Run direct = paper_simplify(points, 10, CGAL::parameters::number_of_output_points(stopped.kept));
     CHECK(kept_positions(stopped) == kept_positions(direct));
   }
   SECTION("stopping during the initial estimation keeps everything")
   {
     const std::function<bool(double)> stop_now = [](double) { return false; };
-    const Run stopped = simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_now));
+    const Run stopped = paper_simplify(points, 10, CGAL::parameters::number_of_output_points(100).callback(stop_now));
     CHECK(stopped.kept == points.size());
     CHECK(is_permutation_of_input(stopped, points));
   }
@@ -300,10 +295,10 @@ TEST_CASE("Results are deterministic, and the same sequentially and in parallel"
   test_parallel::require_tbb();
   const std::vector<Point> points = test_clouds::small_replica(40000, 9000, 0.002, 13).points;
   const auto np = CGAL::parameters::select_percentage(10.);
-  const Run first = simplify<CGAL::Sequential_tag>(points, 10, np);
-  const Run again = simplify<CGAL::Sequential_tag>(points, 10, np);
+  const Run first = paper_simplify<CGAL::Sequential_tag>(points, 10, np);
+  const Run again = paper_simplify<CGAL::Sequential_tag>(points, 10, np);
   const Run parallel =
-    test_parallel::on_two_threads_or_more([&] { return simplify<test_parallel::Parallel_tag>(points, 10, np); });
+    test_parallel::on_two_threads_or_more([&] { return paper_simplify<test_parallel::Parallel_tag>(points, 10, np); });
   CHECK(first.order == again.order);
   CHECK(first.order == parallel.order);
 }
@@ -438,7 +433,7 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
     std::vector<Point> plane;
     for (const Point& p : points)
       plane.emplace_back(p.x(), p.y(), 0.);
-    const Run run = simplify(plane, 10, count(100));
+    const Run run = paper_simplify(plane, 10, count(100));
     std::set<std::size_t> last;
     for (std::size_t i = plane.size() - 100; i < plane.size(); ++i)
       last.insert(i);
@@ -449,8 +444,8 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
     std::vector<Point> line;
     for (std::size_t i = 0; i < 200; ++i)
       line.emplace_back(0.1 * double(i * 7 % 200), 0.2 * double(i * 7 % 200), -0.3 * double(i * 7 % 200));
-    const Run once = simplify(line, 10, count(30));
-    const Run twice = simplify(line, 10, count(30));
+    const Run once = paper_simplify(line, 10, count(30));
+    const Run twice = paper_simplify(line, 10, count(30));
     CHECK(once.kept == 30);
     CHECK(once.order == twice.order);
     CHECK(is_permutation_of_input(once, line));

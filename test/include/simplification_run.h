@@ -24,6 +24,13 @@ namespace ES = CGAL::Entropy_simplification;
 using Point = CGAL::Simple_cartesian<double>::Point_3;
 using Vector = CGAL::Simple_cartesian<double>::Vector_3;
 
+inline ES::Options paper_mode()
+{
+  ES::Options options;
+  options.mode = ES::Mode::paper;
+  return options;
+}
+
 struct Run
 {
   std::vector<std::size_t> order; // the input position of each element of the range after the call
