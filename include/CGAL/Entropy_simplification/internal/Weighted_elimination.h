@@ -232,7 +232,8 @@ private:
   {
     Array<Index> entries;
     std::size_t points = 0;
-    std::size_t neighbors = 0;
+
+    std::size_t neighbor_count() const { return entries.size() - 2 * points; }
   };
 
   // The list of a leaf of `tree`, and the weight of each of its points.
@@ -255,7 +256,6 @@ private:
       ++list.points;
       m_weight[i].store(sum, std::memory_order_relaxed);
     });
-    list.neighbors = list.entries.size() - 2 * list.points;
   }
 
   // Appends the first `count` lists to the CSR neighbours, in parallel, each
@@ -266,7 +266,7 @@ private:
   {
     Array<std::size_t> at(count + 1, m_neighbors.size());
     for (std::size_t r = 0; r < count; ++r)
-      at[r + 1] = at[r] + lists[r].neighbors;
+      at[r + 1] = at[r] + lists[r].neighbor_count();
     m_neighbors.resize(at[count]);
     for_each_index<ConcurrencyTag>(
       count,
