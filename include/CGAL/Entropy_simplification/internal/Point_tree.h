@@ -51,6 +51,9 @@ struct Neighbor
 class Point_tree
 {
   static constexpr std::size_t leaf_size = 20;
+  // a leaf's points are scanned in chunks of at most this many (a leaf holds
+  // more than leaf_size points only when indices repeat)
+  static constexpr Index chunk_size = 32;
   // subtrees of more points are built in parallel under Parallel_tag
   static constexpr std::size_t parallel_build_size = std::size_t(1) << 16;
 
@@ -292,12 +295,27 @@ private:
     {
       const Node& node = m_nodes[n];
       if (node.child == 0)
-        for (Index r = node.first; r < node.beyond; ++r)
+        for (Index first = node.first; first < node.beyond; first += chunk_size)
         {
-          const Index i = m_order[r];
-          const double distance = squared_distance(center, m_points.points[i]);
-          if (distance <= best.bound() && i != q && !is_removed(i))
-            best.offer(Neighbor{ distance, m_points.input_position[i], i });
+          // most points of a leaf lie beyond the bound: they are sorted out
+          // without a branch, and only the others are offered
+          double distance[chunk_size];
+          Index near[chunk_size];
+          const Index count = (std::min)(chunk_size, node.beyond - first);
+          const double bound = best.bound();
+          Index near_count = 0;
+          for (Index j = 0; j < count; ++j)
+          {
+            distance[j] = squared_distance(center, m_points.points[m_order[first + j]]);
+            near[near_count] = j;
+            near_count += Index(distance[j] <= bound);
+          }
+          for (Index t = 0; t < near_count; ++t)
+          {
+            const Index j = near[t], i = m_order[first + j];
+            if (distance[j] <= best.bound() && i != q && !is_removed(i))
+              best.offer(Neighbor{ distance[j], m_points.input_position[i], i });
+          }
         }
       else
       {
@@ -377,12 +395,23 @@ private:
     const double node_reach = widened(radius * (scale + m_largest_scale[n]));
     if (squared_distance_to_box(center, node) > node_reach * node_reach)
       return;
-    for (Index r = node.first; r < node.beyond; ++r)
+    // as in search_nearest, the points within reach are sorted out without a
+    // branch
+    for (Index first = node.first; first < node.beyond; first += chunk_size)
     {
-      const Index i = m_order[r];
-      const double reach = widened(radius * (scale + scales[i]));
-      if (!is_removed(i) && squared_distance(center, m_points.points[i]) <= reach * reach)
-        inside.push_back(i);
+      Index near[chunk_size];
+      const Index count = (std::min)(chunk_size, node.beyond - first);
+      Index near_count = 0;
+      for (Index j = 0; j < count; ++j)
+      {
+        const Index i = m_order[first + j];
+        const double reach = widened(radius * (scale + scales[i]));
+        near[near_count] = i;
+        near_count += Index(squared_distance(center, m_points.points[i]) <= reach * reach);
+      }
+      for (Index t = 0; t < near_count; ++t)
+        if (!is_removed(near[t]))
+          inside.push_back(near[t]);
     }
   }
 
