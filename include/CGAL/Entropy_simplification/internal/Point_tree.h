@@ -295,13 +295,14 @@ private:
     {
       const Node& node = m_nodes[n];
       if (node.child == 0)
-        for (Index first = node.first; first < node.beyond; first += chunk_size)
+        // (an Index would wrap past the last chunk of indices near 2^32)
+        for (std::size_t first = node.first; first < node.beyond; first += chunk_size)
         {
           // most points of a leaf lie beyond the bound: they are sorted out
           // without a branch, and only the others are offered
           double distance[chunk_size];
           Index near[chunk_size];
-          const Index count = (std::min)(chunk_size, node.beyond - first);
+          const Index count = Index((std::min)(std::size_t(chunk_size), node.beyond - first));
           const double bound = best.bound();
           Index near_count = 0;
           for (Index j = 0; j < count; ++j)
@@ -397,10 +398,10 @@ private:
       return;
     // as in search_nearest, the points within reach are sorted out without a
     // branch
-    for (Index first = node.first; first < node.beyond; first += chunk_size)
+    for (std::size_t first = node.first; first < node.beyond; first += chunk_size)
     {
       Index near[chunk_size];
-      const Index count = (std::min)(chunk_size, node.beyond - first);
+      const Index count = Index((std::min)(std::size_t(chunk_size), node.beyond - first));
       Index near_count = 0;
       for (Index j = 0; j < count; ++j)
       {
