@@ -19,6 +19,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -63,12 +64,41 @@ struct Rows
   Row_point_map map;
 };
 
+// Clears the Python error that a conversion of the caller's value raised,
+// which the caller reports as a ValueError, unless it is an interruption
+// (KeyboardInterrupt, SystemExit) or a MemoryError: those are raised as
+// they are.
+void clear_conversion_error()
+{
+  if (PyErr_Occurred() && (!PyErr_ExceptionMatches(PyExc_Exception) || PyErr_ExceptionMatches(PyExc_MemoryError)))
+    throw py::error_already_set();
+  PyErr_Clear();
+}
+
+// `object` as an array of `Array`'s type and layout, converted by NumPy
+// where needed; none when NumPy cannot convert it, as for
+// clear_conversion_error.
+template <typename Array>
+std::optional<Array> converted(const py::handle& object)
+{
+  try
+  {
+    return Array(py::reinterpret_borrow<py::object>(object));
+  }
+  catch (py::error_already_set& e)
+  {
+    if (!e.matches(PyExc_Exception) || e.matches(PyExc_MemoryError))
+      throw;
+    return std::nullopt;
+  }
+}
+
 Rows rows_of(const py::handle& points, const char* name)
 {
-  Points_array array = Points_array::ensure(points);
-  if (!array || array.ndim() != 2 || array.shape(1) != 3)
+  const std::optional<Points_array> array = converted<Points_array>(points);
+  if (!array || array->ndim() != 2 || array->shape(1) != 3)
     throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
-  Rows result{ array, std::vector<std::size_t>(std::size_t(array.shape(0))), Row_point_map{ array.data() } };
+  Rows result{ *array, std::vector<std::size_t>(std::size_t(array->shape(0))), Row_point_map{ array->data() } };
   for (std::size_t i = 0; i < result.rows.size(); ++i)
     result.rows[i] = i;
   return result;
@@ -99,17 +129,31 @@ Value choice(const char* option, const std::string& text, const std::vector<std:
 
 std::string repr(const py::object& value) { return py::repr(value).cast<std::string>(); }
 
+// Whether `value` is a bool, Python's or NumPy's: one would read as 0 or 1.
+bool is_boolean(const py::object& value)
+{
+  return py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+}
+
+// A keyword's value as text (a str), or ValueError.
+std::string text(const py::object& value, const char* name)
+{
+  if (!py::isinstance<py::str>(value))
+    throw std::invalid_argument(std::string(name) + " must be a string, got " + repr(value));
+  return value.cast<std::string>();
+}
+
 // A keyword's value as a whole number (an int or a NumPy integer, not a
 // bool), or ValueError.
 long long whole_number(const py::object& value, const char* name)
 {
-  if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+  if (is_boolean(value) || !PyIndex_Check(value.ptr()))
     throw std::invalid_argument(std::string(name) + " must be a whole number, got " + repr(value));
   const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
   const long long n = index ? PyLong_AsLongLong(index.ptr()) : -1;
   if (!index || (n == -1 && PyErr_Occurred()))
   {
-    PyErr_Clear();
+    clear_conversion_error();
     throw std::invalid_argument(std::string(name) + " is out of range, got " + repr(value));
   }
   return n;
@@ -118,18 +162,18 @@ long long whole_number(const py::object& value, const char* name)
 // A keyword's value as a number, or ValueError.
 double real_number(const py::object& value, const char* name)
 {
-  const bool number = !py::isinstance<py::bool_>(value) && PyNumber_Check(value.ptr());
+  const bool number = !is_boolean(value) && PyNumber_Check(value.ptr());
   const double x = number ? PyFloat_AsDouble(value.ptr()) : 0.;
   if (!number || (x == -1. && PyErr_Occurred()))
   {
-    PyErr_Clear();
+    clear_conversion_error();
     throw std::invalid_argument(std::string(name) + " must be a number, got " + repr(value));
   }
   return x;
 }
 
-Call_options call_options(const py::object& ratio, const py::object& count, const py::object& k, const std::string& mode,
-                          const py::object& feature_weight, const std::string& normals, const py::object& order,
+Call_options call_options(const py::object& ratio, const py::object& count, const py::object& k, const py::object& mode,
+                          const py::object& feature_weight, const py::object& normals, const py::object& order,
                           const py::object& threads)
 {
   Call_options c;
@@ -152,10 +196,11 @@ Call_options call_options(const py::object& ratio, const py::object& count, cons
   if (kk < 0 || kk > 1000000)
     throw std::invalid_argument("k = " + std::to_string(kk) + " is out of range");
   c.k = unsigned(kk);
-  c.options.mode = choice<ES::Mode>("mode", mode, { { "default", ES::Mode::weighted_elimination },
-                                                    { "paper", ES::Mode::paper } });
-  c.options.normal_estimation = choice<ES::Normal_estimation>(
-    "normals", normals, { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
+  c.options.mode = choice<ES::Mode>(
+    "mode", text(mode, "mode"), { { "default", ES::Mode::weighted_elimination }, { "paper", ES::Mode::paper } });
+  c.options.normal_estimation =
+    choice<ES::Normal_estimation>("normals", text(normals, "normals"),
+                                  { { "pca", ES::Normal_estimation::pca }, { "jet", ES::Normal_estimation::jet } });
   if (!feature_weight.is_none())
   {
     if (c.options.mode == ES::Mode::paper)
@@ -167,8 +212,8 @@ Call_options call_options(const py::object& ratio, const py::object& count, cons
     if (c.options.mode != ES::Mode::paper)
       throw std::invalid_argument("order applies to mode='paper' only");
     c.options.removal_order = choice<ES::Removal_order>(
-      "order", py::str(order).cast<std::string>(), { { "lowest", ES::Removal_order::lowest_entropy_first },
-                                            { "highest", ES::Removal_order::highest_entropy_first } });
+      "order", text(order, "order"), { { "lowest", ES::Removal_order::lowest_entropy_first },
+                                       { "highest", ES::Removal_order::highest_entropy_first } });
   }
   if (!threads.is_none())
   {
@@ -233,8 +278,8 @@ py::array_t<T> to_array(const std::vector<T>& values)
 }
 
 py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& ratio, const py::object& count,
-                                   const py::object& k, const std::string& mode, const py::object& feature_weight,
-                                   const std::string& normals, const py::object& order, const py::object& threads)
+                                   const py::object& k, const py::object& mode, const py::object& feature_weight,
+                                   const py::object& normals, const py::object& order, const py::object& threads)
 {
   const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
   if (!c.ratio && !c.count)
@@ -256,16 +301,16 @@ py::array_t<std::int64_t> simplify(const py::handle& points, const py::object& r
 }
 
 py::array_t<std::int64_t> ranks(const py::handle& points, const py::object& ratio, const py::object& count,
-                                const py::object& k, const std::string& mode, const py::object& feature_weight,
-                                const std::string& normals, const py::object& order, const py::object& threads)
+                                const py::object& k, const py::object& mode, const py::object& feature_weight,
+                                const py::object& normals, const py::object& order, const py::object& threads)
 {
   const Call_options c = call_options(ratio, count, k, mode, feature_weight, normals, order, threads);
   const std::vector<std::size_t> r = ranks_of(rows_of(points, "points"), c);
   return to_array(std::vector<std::int64_t>(r.begin(), r.end()));
 }
 
-py::array_t<double> importance(const py::handle& points, const py::object& k, const std::string& mode,
-                               const std::string& normals, const py::object& threads)
+py::array_t<double> importance(const py::handle& points, const py::object& k, const py::object& mode,
+                               const py::object& normals, const py::object& threads)
 {
   const Call_options c = call_options(py::none(), py::none(), k, mode, py::none(), normals, py::none(), threads);
   Rows rows = rows_of(points, "points");
@@ -283,7 +328,11 @@ py::array_t<double> importance(const py::handle& points, const py::object& k, co
 template <typename Integer>
 std::vector<std::size_t> indices_below(const py::array& integers, std::size_t n)
 {
-  const auto indices = py::array_t<Integer, py::array::c_style | py::array::forcecast>::ensure(integers);
+  using Indices = py::array_t<Integer, py::array::c_style | py::array::forcecast>;
+  const std::optional<Indices> converted_indices = converted<Indices>(integers);
+  if (!converted_indices)
+    throw std::invalid_argument("kept_idx cannot be read as indices");
+  const Indices& indices = *converted_indices;
   std::vector<std::size_t> kept(std::size_t(indices.size()));
   for (std::size_t j = 0; j < kept.size(); ++j)
   {
@@ -296,20 +345,37 @@ std::vector<std::size_t> indices_below(const py::array& integers, std::size_t n)
   return kept;
 }
 
+// Throws when an index repeats: a kept point counted twice would weigh
+// twice in the planes fitted to the kept points.
+void require_distinct(std::vector<std::size_t> indices)
+{
+  std::sort(indices.begin(), indices.end());
+  const auto repeated = std::adjacent_find(indices.begin(), indices.end());
+  if (repeated != indices.end())
+    throw std::invalid_argument("kept_idx holds the index " + std::to_string(*repeated) + " more than once");
+}
+
 // The kept indices: a one-dimensional array of integers, each an index of
 // the `n` points. Booleans, which would read as the indices 0 and 1, and
 // floats, which would be truncated, are refused.
 std::vector<std::size_t> kept_indices_of(const py::handle& object, std::size_t n)
 {
-  const py::array array = py::array::ensure(object);
-  if (!array || array.ndim() != 1)
+  const std::optional<py::array> converted_array = converted<py::array>(object);
+  if (!converted_array || converted_array->ndim() != 1)
     throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
+  const py::array& array = *converted_array;
+  // an empty array, of any dtype, keeps nothing
+  if (array.size() == 0)
+    return {};
   const char kind = array.dtype().kind();
-  if (array.size() > 0 && kind != 'i' && kind != 'u')
+  if (kind != 'i' && kind != 'u')
     throw std::invalid_argument("kept_idx must hold integers, not values of dtype " +
                                 std::string(py::str(array.dtype())) +
                                 (kind == 'b' ? " (for a mask of kept points, pass numpy.flatnonzero(mask))" : ""));
-  return kind == 'u' ? indices_below<std::uint64_t>(array, n) : indices_below<std::int64_t>(array, n);
+  std::vector<std::size_t> kept =
+    kind == 'u' ? indices_below<std::uint64_t>(array, n) : indices_below<std::int64_t>(array, n);
+  require_distinct(kept);
+  return kept;
 }
 
 py::dict report(const py::handle& points, const py::handle& kept_indices)

@@ -168,9 +168,41 @@ def test_empty_input():
     (lambda p: es.report(p, np.array([2.7, 5.2])), "kept_idx must hold integers, not values of dtype float64"),
     (lambda p: es.report(p, np.array([2 ** 64 - 1], dtype=np.uint64)),
      "kept_idx holds 18446744073709551615, not an index of the"),
+    (lambda p: es.report(p, np.array([], dtype="i8,i8")), "the simplification is empty"),
+    (lambda p: es.report(p, np.array([3, 5, 3])), "kept_idx holds the index 3 more than once"),
+    (lambda p: es.simplify(p, count=10, mode=None), "mode must be a string, got None"),
+    (lambda p: es.simplify(p, count=10, normals=b"pca"), "normals must be a string, got b'pca'"),
+    (lambda p: es.simplify(p, count=20, mode="paper", order=1), "order must be a string, got 1"),
+    (lambda p: es.simplify(p, ratio=np.bool_(True)), "ratio must be a number, got True"),
+    (lambda p: es.simplify(p, count=np.bool_(True)), "count must be a whole number, got True"),
 ])
 def test_bad_input_raises_value_error(kitten, call, message):
     with pytest.raises(ValueError, match=message):
+        call(kitten)
+
+
+class Interrupting:
+    """Raises KeyboardInterrupt when NumPy or the module converts it."""
+
+    def __array__(self, dtype=None, copy=None):
+        raise KeyboardInterrupt
+
+    def __float__(self):
+        raise KeyboardInterrupt
+
+    def __index__(self):
+        raise KeyboardInterrupt
+
+
+@pytest.mark.parametrize("call", [
+    lambda p: es.simplify(Interrupting(), ratio=0.5),
+    lambda p: es.simplify(p, ratio=Interrupting()),
+    lambda p: es.simplify(p, count=Interrupting()),
+    lambda p: es.report(p, Interrupting()),
+])
+def test_an_interruption_during_a_conversion_stays_one(kitten, call):
+    """Ctrl-C while an argument is converted is not reported as bad input."""
+    with pytest.raises(KeyboardInterrupt):
         call(kitten)
 
 
