@@ -453,9 +453,10 @@ TEST_CASE("Default mode: bad input gets a documented behaviour", "[default][bad 
 {
   const std::vector<Point> points = test_clouds::wavy_surface(300, 0.01, 17).points;
   const auto count = [](std::size_t n) { return CGAL::parameters::number_of_output_points(n); };
-  SECTION("a feature weight that is negative or not finite is an error, before anything moves")
+  SECTION("a feature weight that is negative, above 100 or not finite is an error, before anything moves")
   {
-    for (double bad : { -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+    for (double bad : { -1., 100.5, 1e308, std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::infinity() })
     {
       ES::Options options;
       options.feature_weight = bad;
@@ -478,6 +479,23 @@ TEST_CASE("Default mode: bad input gets a documented behaviour", "[default][bad 
     reversed.removal_order = ES::Removal_order::highest_entropy_first;
     reversed.reference_normal = std::array<double, 3>{ 1., 0., 0. };
     CHECK(simplify(points, 10, count(60), reversed).order == simplify(points, 10, count(60)).order);
+  }
+  SECTION("jet normals on a cluster narrower than 1e-150 in a wider cloud: null normals there, no crash")
+  {
+    // the fit's scaling underflowed on such a cluster, and its SVD read out
+    // of bounds: a crash with the cluster's spacing below about 1e-162
+    std::vector<Point> clustered;
+    for (int i = 0; i < 11; ++i)
+      clustered.emplace_back(0.25, double(i) * 1e-200, double(i % 7) * 1e-200);
+    clustered.emplace_back(1., 1., 1.);
+    ES::Options jet;
+    jet.normal_estimation = ES::Normal_estimation::jet;
+    const Run once = simplify(clustered, 10, count(6), jet);
+    CHECK(once.kept == 6);
+    CHECK(is_permutation(once, clustered.size()));
+    CHECK(once.order == simplify(clustered, 10, count(6), jet).order);
+    jet.mode = ES::Mode::paper;
+    CHECK(simplify(clustered, 10, count(11), jet).kept == 11);
   }
   SECTION("a collinear cloud gives a deterministic, exact-count result")
   {

@@ -175,8 +175,8 @@ inline void check(Settings& s, const std::string& ratio, const std::string& coun
     if (s.options.mode == ES::Mode::paper)
       throw Usage_error("--feature-weight applies to the default mode only");
     s.options.feature_weight = finite_number("--feature-weight", feature_weight);
-    if (s.options.feature_weight < 0.)
-      throw Usage_error("--feature-weight must be non-negative, got " + feature_weight);
+    if (!(s.options.feature_weight >= 0. && s.options.feature_weight <= ES::Options::largest_feature_weight))
+      throw Usage_error("--feature-weight must lie in [0, 100], got " + feature_weight);
   }
   if (!order.empty())
   {

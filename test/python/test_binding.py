@@ -148,7 +148,7 @@ def test_empty_input():
     (lambda p: es.simplify(p, count=10, normals="svd"), "normals must be 'pca' or 'jet'"),
     (lambda p: es.simplify(p, count=10, order="lowest"), "order applies to mode='paper' only"),
     (lambda p: es.simplify(p, count=10, mode="paper", feature_weight=2.), "feature_weight applies to the default"),
-    (lambda p: es.simplify(p, count=10, feature_weight=-1.), "feature_weight must be finite and non-negative"),
+    (lambda p: es.simplify(p, count=10, feature_weight=-1.), "feature_weight must lie in \\[0, 100\\]"),
     (lambda p: es.simplify(p, count=5, mode="paper"), "must keep at least k \\+ 1 = 11 points"),
     (lambda p: es.simplify(p, count=10, threads=0), "threads must be at least 1"),
     (lambda p: es.simplify(p[:, :2], count=10), r"points must be an \(n, 3\) array"),

@@ -84,9 +84,14 @@ struct Options
     raises the density aimed at on features, at a cost in mean distance that
     `benchmark/RESULTS.md` measures (section "Feature emphasis against
     coverage"). 0 switches the entropy term off: plain weighted sample
-    elimination. Must be finite and non-negative.
+    elimination. Must lie in [0, 100]: the flat regions' interaction radius
+    grows with the weight, and so do the neighbour lists of the elimination,
+    its memory and its time (at 10^4, 40 KB per point).
   */
   double feature_weight = 3.;
+
+  /// the largest `feature_weight` accepted
+  static constexpr double largest_feature_weight = 100.;
 
   /*!
     `Mode::paper` and the accuracy indicator only: the normal of the reference

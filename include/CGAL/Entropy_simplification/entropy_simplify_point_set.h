@@ -52,8 +52,8 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
     throw std::invalid_argument("the paper's mode must keep at least k + 1 = " + std::to_string(k + 1) +
                                 " points so that every point keeps k neighbours; " + std::to_string(target) +
                                 " were asked");
-  if (!(options.feature_weight >= 0. && std::isfinite(options.feature_weight)))
-    throw std::invalid_argument("Options::feature_weight must be finite and non-negative");
+  if (!(options.feature_weight >= 0. && options.feature_weight <= Options::largest_feature_weight))
+    throw std::invalid_argument("Options::feature_weight must lie in [0, 100]");
 }
 
 } // namespace internal

@@ -75,15 +75,25 @@ Working_vector pca_normal(std::size_t m, PointAt point)
 // The unit normal of a jet of degree 2 fitted to the `m >= 6` points, the
 // first being the point where the normal is wanted, as
 // `CGAL::jet_estimate_normals()` computes it. A fit that degenerates (for
-// instance on coincident points) gives the null vector, as PCA does.
+// instance on coincident points) gives the null vector, as PCA does. So does
+// a neighbourhood narrower than jet_smallest_extent: the fit's scaling
+// underflows there, and its SVD then reads out of bounds.
+constexpr double jet_smallest_extent = 1e-150;
+
 template <typename PointAt>
 Working_vector jet_normal(std::size_t m, PointAt point)
 {
   using Fitting = CGAL::Monge_via_jet_fitting<Working_kernel, Working_kernel, CGAL::Eigen_svd>;
   thread_local Array<Working_point> points;
   points.clear();
+  double extent = 0.;
   for (std::size_t i = 0; i < m; ++i)
+  {
     points.push_back(point(i));
+    extent = (std::max)(extent, squared_distance(points.front(), points.back()));
+  }
+  if (extent < jet_smallest_extent * jet_smallest_extent)
+    return CGAL::NULL_VECTOR;
   Fitting fitting;
   const Working_vector normal = fitting(points.begin(), points.end(), 2, 1).normal_direction();
   if (!(std::isfinite(normal.x()) && std::isfinite(normal.y()) && std::isfinite(normal.z())))
