@@ -222,7 +222,7 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   app.add_option("--mode", mode, "default | paper: weighted elimination with denser features (default), "
                                  "or the paper's method, which keeps at least k + 1 points")->type_name("M");
   app.add_option("--feature-weight", feature_weight, "default mode: features keep up to 1 + W times the "
-                                                     "density of flat regions (default 3; 0: no entropy term)")
+                                                     "density of flat regions (default 3; 0: no entropy term; at most 100)")
     ->type_name("W");
   app.add_option("--order", order, "paper mode: lowest | highest, which entropy is removed first "
                                    "(default lowest, the paper's text)")->type_name("O");
