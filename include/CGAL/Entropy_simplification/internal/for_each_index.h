@@ -16,6 +16,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <type_traits>
 
@@ -23,11 +24,27 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
+// The size of the next block of for_each_index, from the last one's size
+// and time: blocks of about 25 to 100 ms, so that a stop asked for through
+// the progress callback is seen soon however long one call takes (with
+// k = 1000, fixed blocks of 32768 points took seconds), and so that cheap
+// calls still go in blocks long enough to spread over the threads.
+inline std::size_t next_block_size(std::size_t block, double seconds)
+{
+  if (seconds < 0.025)
+    return (std::min)(block * 2, std::size_t(1) << 20);
+  if (seconds > 0.1)
+    return (std::max)(std::size_t(double(block) * 0.05 / seconds), std::size_t(1));
+  return block;
+}
+
 // Calls `f(i)` for every i in [0, n), block after block. After each block,
 // `progress(done)` runs on the calling thread, so a user callback is never
 // called concurrently; when it returns false the loop stops and this returns
 // false. Within a block the calls run in parallel with `CGAL::Parallel_tag`:
-// `f` must then only write to data owned by index i.
+// `f` must then only write to data owned by index i. The blocks' sizes
+// follow the time they take (see next_block_size), which changes nothing
+// but when progress is reported.
 template <typename ConcurrencyTag, typename Function, typename Progress>
 bool for_each_index(std::size_t n, const Function& f, const Progress& progress)
 {
@@ -35,10 +52,11 @@ bool for_each_index(std::size_t n, const Function& f, const Progress& progress)
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
                 "CGAL::Parallel_tag is enabled but TBB is unavailable");
 #endif
-  const std::size_t block = 1 << 15;
-  for (std::size_t first = 0; first < n; first += block)
+  std::size_t block = 1 << 12;
+  for (std::size_t first = 0; first < n;)
   {
     const std::size_t beyond = (std::min)(n, first + block);
+    const auto start = std::chrono::steady_clock::now();
 #ifdef CGAL_LINKED_WITH_TBB
     if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
     {
@@ -54,6 +72,8 @@ bool for_each_index(std::size_t n, const Function& f, const Progress& progress)
       for (std::size_t i = first; i != beyond; ++i)
         f(i);
     }
+    block = next_block_size(block, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    first = beyond;
     if (!progress(beyond))
       return false;
   }
