@@ -87,8 +87,8 @@ std::optional<Array> converted(const py::handle& object)
   }
   catch (py::error_already_set& e)
   {
-    if (!e.matches(PyExc_Exception) || e.matches(PyExc_MemoryError))
-      throw;
+    e.restore();
+    clear_conversion_error();
     return std::nullopt;
   }
 }

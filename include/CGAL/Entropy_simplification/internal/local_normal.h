@@ -76,10 +76,9 @@ Working_vector pca_normal(std::size_t m, PointAt point)
 // first being the point where the normal is wanted, as
 // `CGAL::jet_estimate_normals()` computes it. A fit that degenerates (for
 // instance on coincident points) gives the null vector, as PCA does. So does
-// a neighbourhood narrower than jet_smallest_extent: the fit's scaling
-// underflows there, and its SVD then reads out of bounds.
-constexpr double jet_smallest_extent = 1e-150;
-
+// a neighbourhood narrower than smallest_extent, the least the package
+// accepts for a cloud: the fit's scaling underflows there, and its SVD then
+// reads out of bounds.
 template <typename PointAt>
 Working_vector jet_normal(std::size_t m, PointAt point)
 {
@@ -92,7 +91,7 @@ Working_vector jet_normal(std::size_t m, PointAt point)
     points.push_back(point(i));
     extent = (std::max)(extent, squared_distance(points.front(), points.back()));
   }
-  if (extent < jet_smallest_extent * jet_smallest_extent)
+  if (extent < smallest_extent * smallest_extent)
     return CGAL::NULL_VECTOR;
   Fitting fitting;
   const Working_vector normal = fitting(points.begin(), points.end(), 2, 1).normal_direction();
