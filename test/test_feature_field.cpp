@@ -267,3 +267,57 @@ TEST_CASE("Default mode: the normals written are CGAL's normals of the input at 
       CHECK(largest_difference <= 1e-9);
     }
 }
+
+// The coarse scale takes seconds with a large k (about 2.5 s for 300,000
+// points at k = 1000), so it reports its progress and honours a stop.
+TEST_CASE("Feature field: the coarse scale reports its progress and stops when asked", "[feature field]")
+{
+  const test_clouds::Cloud cloud = test_clouds::wavy_surface(40000, 0.002, 17);
+  const ESI::Indexed_points points =
+    ESI::sort_spatially(ESI::Array<ESI::Working_point>(cloud.points.begin(), cloud.points.end()));
+  const unsigned int k = 10;
+  ESI::Array<ESI::Index> knn;
+  ESI::Array<double> entropy;
+  auto go_on = [](double) { return true; };
+  REQUIRE(ESI::nearest_neighbors_of_all<CGAL::Sequential_tag>(points, k, knn, go_on));
+  REQUIRE(ESI::normal_entropy_of_all<CGAL::Sequential_tag>(points, k, ES::Normal_estimation::pca, knn, entropy,
+                                                             go_on));
+
+  std::vector<double> fractions;
+  ESI::Array<double> strength;
+  REQUIRE(ESI::feature_strengths<CGAL::Sequential_tag>(points, k, ES::Normal_estimation::pca, entropy, strength,
+                                                         [&](double f) {
+                                                           fractions.push_back(f);
+                                                           return true;
+                                                         }));
+  REQUIRE(strength.size() == points.size());
+  CHECK(std::count_if(strength.begin(), strength.end(), [](double s) { return s > 0.; }) > 0);
+  // each of the three passes reports at least at its end, in order, up to 1
+  REQUIRE(fractions.size() >= 3);
+  CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+  CHECK(fractions.front() > 0.);
+  CHECK(fractions.back() == 1.);
+  for (double third : { 1. / 3., 2. / 3. })
+    CHECK(std::find_if(fractions.begin(), fractions.end(), [&](double f) { return std::abs(f - third) < 1e-12; }) !=
+          fractions.end());
+
+  // asked to stop at its first report, or at the first of its last pass, it
+  // stops there
+  for (double stop_from : { 0., 2. / 3. + 1e-9 })
+  {
+    std::size_t calls = 0, calls_after_stop = 0;
+    bool stopped = false;
+    ESI::Array<double> partial;
+    const bool completed = ESI::feature_strengths<CGAL::Sequential_tag>(
+      points, k, ES::Normal_estimation::pca, entropy, partial, [&](double f) {
+        ++calls;
+        calls_after_stop += stopped;
+        stopped = stopped || f >= stop_from;
+        return !stopped;
+      });
+    CHECK_FALSE(completed);
+    CHECK(stopped);
+    CHECK(calls_after_stop == 0);
+    CHECK(calls < fractions.size());
+  }
+}

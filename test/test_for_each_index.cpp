@@ -33,6 +33,8 @@ TEST_CASE("Loops: slow calls report progress often, and a stop ends the loop soo
   }));
   CHECK(std::count(done.begin(), done.end(), 1) == 6000);
   CHECK(reports.size() >= 3);
+  // the first block is small, whatever the calls cost
+  CHECK(reports.front() <= 256);
   CHECK(std::is_sorted(reports.begin(), reports.end()));
   CHECK(reports.back() == 6000);
 

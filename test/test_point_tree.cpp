@@ -269,3 +269,36 @@ TEST_CASE("Point tree: the kd order is the manual's", "[point tree]")
     REQUIRE(std::equal(sorted.input_position.begin(), sorted.input_position.end(), expected.begin(), expected.end()));
   }
 }
+
+// With a large k the table is filled a part at a time (2097 rows per part
+// at k = 2000): rows on either side of a part's end are those of a scan,
+// the progress counts every row once, and a stop ends the fill.
+TEST_CASE("Point tree: the neighbour table of a large k, part after part", "[point tree]")
+{
+  const ESI::Indexed_points p = test_points();
+  const ESI::Array<ESI::Index> all = ESI::all_indices(p.size());
+  const ESI::Point_tree tree(p, all.begin(), all.end());
+  const unsigned int k = 2000;
+  ESI::Array<ESI::Index> table;
+  std::vector<std::size_t> reports;
+  REQUIRE(ESI::nearest_neighbor_table<CGAL::Parallel_if_available_tag>(tree, all, k, table, [&](std::size_t done) {
+    reports.push_back(done);
+    return true;
+  }));
+  REQUIRE(table.size() == p.size() * k);
+  CHECK(std::is_sorted(reports.begin(), reports.end()));
+  CHECK(std::find(reports.begin(), reports.end(), std::size_t(2097)) != reports.end());
+  CHECK(reports.back() == p.size());
+  for (std::size_t r : { std::size_t(0), std::size_t(2096), std::size_t(2097), std::size_t(2999) })
+  {
+    const ESI::Array<ESI::Index> expected = scan_nearest(p, all, ESI::Index(r), k);
+    REQUIRE(ESI::Array<ESI::Index>(table.begin() + std::ptrdiff_t(r * k), table.begin() + std::ptrdiff_t((r + 1) * k)) ==
+            expected);
+  }
+  std::size_t calls = 0;
+  CHECK_FALSE(ESI::nearest_neighbor_table<CGAL::Sequential_tag>(tree, all, k, table, [&](std::size_t) {
+    ++calls;
+    return false;
+  }));
+  CHECK(calls == 1);
+}

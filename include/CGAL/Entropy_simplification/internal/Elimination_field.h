@@ -65,21 +65,26 @@ bool estimate_normal_entropy(const Indexed_points& points, const Array<Index>& s
     [&](std::size_t done) { return progress(0.5 + 0.5 * double(done) / double(m)); });
 }
 
-// The feature strength at a coarse scale, for every point: that of its
-// nearest point of `coarse`, whose normals and entropies are computed among
-// the coarse points only. Their neighbourhoods are wider, so that a smooth
-// curvature that scanner noise hides at the fine scale shows there.
-template <typename ConcurrencyTag>
-Array<double> coarse_feature_strength(const Indexed_points& points, const Array<Index>& coarse,
-                                            unsigned int k, Normal_estimation estimation)
+// The feature strength at a coarse scale, for every point, to `strength`:
+// that of its nearest point of `coarse`, whose normals and entropies are
+// computed among the coarse points only. Their neighbourhoods are wider, so
+// that a smooth curvature that scanner noise hides at the fine scale shows
+// there. With a large k this takes seconds, hence the progress: its three
+// passes count for a third each; returns false when it asked to stop.
+template <typename ConcurrencyTag, typename Progress>
+bool coarse_feature_strength(const Indexed_points& points, const Array<Index>& coarse, unsigned int k,
+                             Normal_estimation estimation, Array<double>& strength, const Progress& progress)
 {
   const std::size_t n = points.size();
-  Array<double> strength(n, 0.);
+  strength.assign(n, 0.);
   if (coarse.size() < std::size_t(k) + 1)
-    return strength;
+    return progress(1.);
   const Point_tree tree(points, coarse.begin(), coarse.end(), ConcurrencyTag());
   Array<Index> knn;
-  nearest_neighbor_table<ConcurrencyTag>(tree, coarse, k, knn, [](std::size_t) { return true; });
+  if (!nearest_neighbor_table<ConcurrencyTag>(tree, coarse, k, knn, [&](std::size_t done) {
+        return progress(double(done) / double(coarse.size()) / 3.);
+      }))
+    return false;
   // the position of each coarse point in `coarse`, one past the end for the others
   Array<Index> slot(n, Index(coarse.size()));
   for (std::size_t r = 0; r < coarse.size(); ++r)
@@ -87,19 +92,19 @@ Array<double> coarse_feature_strength(const Indexed_points& points, const Array<
   // the coarse points' normals and entropies, by slot
   Array<Working_vector> normals(coarse.size(), CGAL::NULL_VECTOR);
   Array<double> entropy(coarse.size(), 0.);
-  estimate_normal_entropy<ConcurrencyTag>(
-    points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
-    [&](Index i) { return slot[i]; }, normals, entropy, [](double) { return true; });
+  if (!estimate_normal_entropy<ConcurrencyTag>(
+        points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
+        [&](Index i) { return slot[i]; }, normals, entropy, [&](double f) { return progress((1. + f) / 3.); }))
+    return false;
   const double floor = entropy_noise_floor(entropy);
-  for_each_index<ConcurrencyTag>(
+  return for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
       // a coarse point is its own nearest, which the search leaves out
       const Index c = slot[i] == coarse.size() ? tree.nearest_one(Index(i)) : Index(i);
       strength[i] = feature_strength(entropy[slot[c]], floor);
     },
-    [](std::size_t) { return true; });
-  return strength;
+    [&](std::size_t done) { return progress((2. + double(done) / double(n)) / 3.); });
 }
 
 // The area each point samples: k points in a disc of the radius of its k-th
@@ -211,39 +216,44 @@ inline Array<Index> coarse_points(const Indexed_points& points)
   return coarse;
 }
 
-// The feature strength of every point, from the entropy of the normals of
-// its neighbourhood: the greater of that of `entropy`, at the scale of k,
-// and that of the coarse scale (see coarse_points).
-template <typename ConcurrencyTag>
-Array<double> feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
-                                      const Array<double>& entropy)
+// The feature strength of every point, to `strength`, from the entropy of
+// the normals of its neighbourhood: the greater of that of `entropy`, at the
+// scale of k, and that of the coarse scale (see coarse_points). `progress`
+// receives the fraction done; returns false when it asked to stop.
+template <typename ConcurrencyTag, typename Progress>
+bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
+                       const Array<double>& entropy, Array<double>& strength, const Progress& progress)
 {
-  const Array<Index> coarse = coarse_points(points);
-  Array<double> strength = coarse_feature_strength<ConcurrencyTag>(points, coarse, k, estimation);
+  if (!coarse_feature_strength<ConcurrencyTag>(points, coarse_points(points), k, estimation, strength, progress))
+    return false;
   const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
     [](std::size_t) { return true; });
-  return strength;
+  return true;
 }
 
 // The field from `knn`, the k nearest neighbours of each point nearest first
 // (those of point i at knn[i * k]), which it frees once used: the feature
-// strengths and the areas the points sample make the scales.
+// strengths and the areas the points sample make the scales. The entropies
+// count for 60% of the progress, the coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
                                Array<Index> knn, Elimination_field& field, const Progress& progress)
 {
   Array<double> entropy;
-  if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy, progress))
+  if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
+                                             [&](double f) { return progress(0.6 * f); }))
     return false;
   Array<double> area =
     sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
   cap_isolated_areas(area);
   Array<Index>().swap(knn);
-  const Array<double> strength =
-    feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
+  Array<double> strength;
+  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, strength,
+                                         [&](double f) { return progress(0.6 + 0.4 * f); }))
+    return false;
   Array<double>().swap(entropy);
   set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, field);
   return true;
@@ -257,13 +267,16 @@ Array<double> feature_strength_of_all(const Indexed_points& points, unsigned int
                                             const Progress& progress)
 {
   Array<Index> knn;
-  Array<double> entropy;
-  if (!nearest_neighbors_of_all<ConcurrencyTag>(points, k, knn, [&](double f) { return progress(0.5 * f); }) ||
+  Array<double> entropy, strength;
+  if (!nearest_neighbors_of_all<ConcurrencyTag>(points, k, knn, [&](double f) { return progress(0.4 * f); }) ||
       !normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
-                                             [&](double f) { return progress(0.5 + 0.5 * f); }))
+                                             [&](double f) { return progress(0.4 + 0.3 * f); }))
     return {};
   Array<Index>().swap(knn);
-  return feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy);
+  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, strength,
+                                         [&](double f) { return progress(0.7 + 0.3 * f); }))
+    return {};
+  return strength;
 }
 
 // The normal of each point of `subset`, estimated on it and its k nearest
