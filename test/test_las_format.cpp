@@ -567,6 +567,59 @@ TEST_CASE("read_las takes LAS 1.4's 64-bit point count unless it is zero", "[las
   CHECK(read_las(file).point_count == 12);
 }
 
+TEST_CASE("read_las notes counts that disagree and bytes after the records", "[las]")
+{
+  // a well-formed file of any version and format gives no note
+  for (const Version_and_format& vf : every_version_and_format())
+    CHECK(read_las(build(sample(vf.minor, vf.format))).notes.empty());
+
+  SECTION("LAS 1.4's legacy count differs from its 64-bit count")
+  {
+    Test_las t = sample(4, 1);
+    t.legacy_count = 3;
+    const Las_file las = read_las(build(t));
+    CHECK(las.point_count == 17);
+    REQUIRE(las.notes.size() == 1);
+    CHECK(las.notes[0] == "the header's legacy point count (byte 107) is 3 and its 64-bit count (byte 247) 17; "
+                          "17 points were read, as LAS 1.4 asks");
+  }
+  SECTION("a header that counts 10 of 17 records")
+  {
+    for (int minor : { 2, 4 })
+    {
+      // LAS 1.2 has nothing after its records; 1.4 has EVLRs there, which
+      // are accounted for, and its legacy count is left 0 in format 6
+      Test_las t = sample(minor, minor == 2 ? 1 : 6);
+      if (minor == 2)
+        t.legacy_count = 10;
+      else
+        t.count_64 = 10;
+      const Las_file las = read_las(build(t));
+      CHECK(las.point_count == 10);
+      const std::string unread = std::to_string(7 * las.record_length);
+      REQUIRE(las.notes.size() == 1);
+      CHECK(las.notes[0] == unread + " bytes after the 10 point records that the header declares are not part of "
+                                     "any record or EVLR (7 records' worth); they are not read, and a LAS output "
+                                     "keeps them as they are: if more points are there, the header's point count "
+                                     "is wrong");
+    }
+  }
+  SECTION("a byte after the records")
+  {
+    const std::string file = build(sample(2, 0)) + "x";
+    CHECK(read_las(file).notes == std::vector<std::string>{
+                                    "1 byte after the 17 point records that the header declares is not part of any "
+                                    "record or EVLR; it is not read, and a LAS output keeps it as it is: if more "
+                                    "points are there, the header's point count is wrong" });
+  }
+  SECTION("waveform data after the records is accounted for")
+  {
+    Test_las t = sample(3, 4);
+    t.legacy_count = 10;
+    CHECK(read_las(build(t)).notes.empty());
+  }
+}
+
 TEST_CASE("local_xyz leaves out the offset, so georeferenced copies agree", "[las]")
 {
   Test_las near = sample(2, 1), far = sample(2, 1);

@@ -352,6 +352,29 @@ TEST_CASE("read_ply drops the vertex element's list properties with a note", "[p
   CHECK_READ_ERROR(read_ply(ascii_ply(header, "1 9 1 2 3\n4 0 5 6\n")), "too few values");
 }
 
+TEST_CASE("read_ply notes data after the vertices when they are the last element", "[ply]")
+{
+  // a header that counts 2 of 3 vertices: 2 are read, and the third is noted
+  const std::string header = "element vertex 2\nproperty float x\nproperty float y\nproperty float z\n";
+  const Ply_cloud ascii = read_ply(ascii_ply(header, "1 2 3\n4 5 6\n7 8 9\n"));
+  CHECK(ascii.table.size() == 2);
+  CHECK(ascii.notes == std::vector<std::string>{ "6 bytes follow the 2 vertices that the header declares, and were "
+                                                 "not read: if more vertices are there, the header's count is "
+                                                 "wrong" });
+  const std::string three = bytes({ 0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x40, 0x40 });
+  const Ply_cloud binary = read_ply(binary_ply(header, three + three + three + "\n"));
+  CHECK(binary.table.size() == 2);
+  CHECK(binary.notes == std::vector<std::string>{ "13 bytes follow the 2 vertices that the header declares, and "
+                                                  "were not read: if more vertices are there, the header's count "
+                                                  "is wrong" });
+  CHECK(read_ply(binary_ply(xyz_header, three + "x")).notes ==
+        std::vector<std::string>{ "1 byte follows the 1 vertex that the header declares, and was not read: if more "
+                                  "vertices are there, the header's count is wrong" });
+  // white space after ASCII vertices, and nothing after binary ones, is no news
+  CHECK(read_ply(ascii_ply(header, "1 2 3\n4 5 6\n \t\r\n\n")).notes.empty());
+  CHECK(read_ply(binary_ply(header, three + three)).notes.empty());
+}
+
 TEST_CASE("read_ply accepts \\r\\n line ends", "[ply]")
 {
   const Ply_cloud ascii = read_ply("ply\r\nformat ascii 1.0\r\ncomment hello\r\nelement vertex 2\r\n"

@@ -80,12 +80,22 @@ Point_table table_to_write(const Settings& s, const Cloud& cloud, const std::vec
   return table;
 }
 
-void print_notes(const Settings& s, const Cloud& cloud, const Point_table& written, Format out)
+// What the input holds that is not kept, or that disagrees with its header:
+// said before the computation, so that a run on the wrong data can be
+// stopped.
+void print_input_notes(const Settings& s, const Cloud& cloud)
 {
   if (s.quiet)
     return;
   for (const std::string& note : cloud.notes)
     std::cerr << "entropy_simplify: note: " << note << "\n";
+}
+
+// What the output's format does not store.
+void print_output_notes(const Settings& s, const Cloud& cloud, const Point_table& written, Format out)
+{
+  if (s.quiet)
+    return;
   if (cloud.las && out != Format::las && las_has_unconverted_bytes(*cloud.las))
     std::cerr << "entropy_simplify: note: the LAS records' waveform packets and extra bytes are not converted; "
                  "write .las to keep them\n";
@@ -135,6 +145,7 @@ int run(int argc, char** argv)
   CGAL::Real_timer timer;
   timer.start();
   const Cloud cloud = reading(s.input, [&] { return read_cloud(input.bytes(), in); });
+  print_input_notes(s, cloud);
   if (s.importance && out == Format::las)
     reading(s.input, [&] { return check_room_for_attribute(*cloud.las, "importance"); });
 
@@ -159,7 +170,7 @@ int run(int argc, char** argv)
   else
   {
     const Point_table table = table_to_write(s, cloud, written, out, normals, importance);
-    print_notes(s, cloud, table, out);
+    print_output_notes(s, cloud, table, out);
     write_table(output.sink(), table, out, s.binary.value_or(in != Format::ply || cloud.binary_ply), cloud.comments);
   }
   if (indices)

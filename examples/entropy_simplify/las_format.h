@@ -45,7 +45,9 @@ struct Las_file
   std::size_t point_count = 0;
   std::size_t header_size = 0, offset_to_points = 0;
   std::size_t vlr_count = 0, evlr_count = 0;
+  std::size_t evlr_bytes = 0; // the EVLRs' headers and data
   double scale[3] = { 1., 1., 1. }, offset[3] = { 0., 0., 0. };
+  std::vector<std::string> notes; // what is odd but readable, for the program to print
 
   const char* record(std::size_t i) const { return bytes.data() + offset_to_points + i * record_length; }
 
@@ -210,6 +212,37 @@ inline void check_evlrs(Las_file& las)
     const char* header = reader.take(evlr_header_size, (evlr + " (its header)").c_str());
     reader.take(std::size_t(load_little_endian<std::uint64_t>(header + 20)), (evlr + " (its data)").c_str());
   }
+  las.evlr_bytes = reader.position() - std::size_t(start);
+}
+
+// A file read without error may still disagree with itself: LAS 1.4's two
+// point counts may differ, and bytes that no header field accounts for may
+// follow the records, where more records would be if the count were short.
+// Both are read as the header says (the 64-bit count; the records it
+// counts), and noted. The waveform data of LAS 1.3 and 1.4 runs to the
+// EVLRs or the end of the file, so it leaves no bytes unaccounted for.
+inline void note_inconsistencies(Las_file& las)
+{
+  const std::uint64_t legacy = field<std::uint32_t>(las, legacy_count_at);
+  if (las.version_minor >= 4 && legacy != 0 && legacy != las.point_count)
+    las.notes.push_back("the header's legacy point count (byte 107) is " + std::to_string(legacy) +
+                        " and its 64-bit count (byte 247) " + std::to_string(las.point_count) + "; " +
+                        std::to_string(las.point_count) + " points were read, as LAS 1.4 asks");
+  if (las.version_minor >= 3 && field<std::uint64_t>(las, waveform_start_at) != 0)
+    return;
+  const std::size_t unread = las.bytes.size() - points_end(las) - las.evlr_bytes;
+  if (unread == 0)
+    return;
+  const bool one = unread == 1;
+  las.notes.push_back(std::to_string(unread) + (one ? " byte" : " bytes") + " after the " +
+                      std::to_string(las.point_count) + " point records that the header declares " +
+                      (one ? "is" : "are") + " not part of any record or EVLR" +
+                      (unread >= las.record_length
+                         ? " (" + std::to_string(unread / las.record_length) + " records' worth)"
+                         : std::string()) +
+                      (one ? "; it is not read, and a LAS output keeps it as it is"
+                           : "; they are not read, and a LAS output keeps them as they are") +
+                      ": if more points are there, the header's point count is wrong");
 }
 
 inline void read_scale_and_offset(Las_file& las)
@@ -243,6 +276,7 @@ inline Las_file read_las(std::string_view bytes)
   las_detail::read_point_count(las);
   las_detail::check_evlrs(las);
   las_detail::read_scale_and_offset(las);
+  las_detail::note_inconsistencies(las);
   return las;
 }
 

@@ -359,6 +359,19 @@ inline void read_ascii_vertices(Text_reader& reader, const Element& vertex, Poin
   }
 }
 
+// The vertices a header declares are all that is read: a file holding more
+// data after them than its last element may count them wrong, and its user
+// should hear of it.
+inline void note_bytes_after_vertices(std::size_t bytes, const Element& vertex, std::vector<std::string>& notes)
+{
+  if (bytes > 0)
+    notes.push_back(std::to_string(bytes) + (bytes == 1 ? " byte follows" : " bytes follow") + " the " +
+                    std::to_string(vertex.count) + (vertex.count == 1 ? " vertex" : " vertices") +
+                    " that the header declares, and " +
+                    (bytes == 1 ? "was" : "were") + " not read: if more vertices are there, the header's count is "
+                    "wrong");
+}
+
 // ---- What is kept ----
 
 // The vertex element's scalar properties as empty columns; its lists, and
@@ -416,6 +429,9 @@ inline Ply_cloud read_ply(std::string_view bytes)
     read_ascii_vertices(text, *vertex, cloud.table);
   else
     read_binary_vertices(binary, *vertex, big_endian, cloud.table);
+  if (vertex + 1 == header.elements.end())
+    note_bytes_after_vertices(ascii ? (text.rest_is_blank() ? 0 : bytes.size() - text.position()) : binary.remaining(),
+                              *vertex, cloud.notes);
   return cloud;
 }
 

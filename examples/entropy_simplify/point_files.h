@@ -107,7 +107,10 @@ inline Cloud read_cloud(std::string_view bytes, Format format)
     cloud.notes = std::move(off.notes);
     break;
   }
-  case Format::las: cloud.las = read_las(bytes); break;
+  case Format::las:
+    cloud.las = read_las(bytes);
+    cloud.notes = cloud.las->notes;
+    break;
   }
   if (cloud.size() == 0)
     throw Read_error("the file holds no points");

@@ -247,6 +247,7 @@ public:
     : path_(path), target_(resolve_links(path)), mode_(mode_of_result(target_))
   {
     refuse_unsafe_target(input_path);
+    refuse_long_name();
     create_temporary();
   }
 
@@ -330,6 +331,18 @@ private:
     if (::stat(input_path.c_str(), &input) == 0 && input.st_dev == output.st_dev && input.st_ino == output.st_ino)
       throw Output_error("refusing to write '" + path_ + "': it is the input file '" + input_path +
                          "' (or a link to it), which would be lost; give another output file");
+  }
+
+  // A name the folder cannot hold would fail only at the rename, after the
+  // computation: the temporary file's name is cut to fit, the target's is not.
+  void refuse_long_name() const
+  {
+    const std::string name = target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1);
+    const long longest = ::pathconf(folder_of(target_).c_str(), _PC_NAME_MAX);
+    if (longest > 0 && name.size() > std::size_t(longest))
+      throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(ENAMETOOLONG) + " (" +
+                         std::to_string(name.size()) + " characters; its folder takes names of up to " +
+                         std::to_string(longest) + ")");
   }
 
   void create_temporary()

@@ -59,6 +59,11 @@ public:
   // the number of the line the last line or token read was on, from 1
   std::size_t line_number() const { return line_; }
   bool at_end() const { return position_ >= text_.size(); }
+  // whether only white space and line ends are left
+  bool rest_is_blank() const
+  {
+    return at_end() || text_.find_first_not_of(" \t\r\v\f\n", position_) == std::string_view::npos;
+  }
 
   // The next line, without its end of line (LF, CRLF, or CR alone, as old
   // Mac files have it); false at the end of the text.

@@ -183,6 +183,7 @@ def main():
     write("truncated_header.las", las(points)[:100])
     write("las_version_2.las", las(points, version=(2, 0)))
     write("las_count_beyond_file.las", las(points, count=100000))
+    write("las_count_short.las", las(points, count=100))
     compressed = bytearray(las(points))
     compressed[104] |= 0x80
     write("laz_in_las.las", bytes(compressed))
