@@ -10,6 +10,7 @@
 #include "reference_elimination.h"
 
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
+#include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
@@ -297,6 +298,50 @@ TEST_CASE("Point tree: the neighbour table of a large k, part after part", "[poi
   }
   std::size_t calls = 0;
   CHECK_FALSE(ESI::nearest_neighbor_table<CGAL::Sequential_tag>(tree, all, k, table, [&](std::size_t) {
+    ++calls;
+    return false;
+  }));
+  CHECK(calls == 1);
+}
+
+// The paper mode's lists grow a part at a time too (2098 points per part at
+// k = 1000, which keeps 2000 candidates): the lists on either side of a
+// part's end are a scan's, before and after removals, the progress rises to
+// 1 through the candidates (80%) and the reverse lists, and a stop ends it.
+TEST_CASE("Point tree: the decremental neighbours of a large k, part after part", "[point tree]")
+{
+  const ESI::Indexed_points p = test_points();
+  const unsigned int k = 1000;
+  std::vector<double> fractions;
+  ESI::Decremental_knn knn(p, k);
+  REQUIRE(knn.initialize<CGAL::Parallel_if_available_tag>([&](double f) {
+    fractions.push_back(f);
+    return true;
+  }));
+  CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+  CHECK(std::find(fractions.begin(), fractions.end(), 0.8) != fractions.end());
+  CHECK(fractions.back() == 1.);
+  ESI::Array<ESI::Index> present = ESI::all_indices(p.size());
+  auto check = [&](ESI::Index q) {
+    const ESI::Array<ESI::Index> expected = scan_nearest(p, present, q, k);
+    REQUIRE(ESI::Array<ESI::Index>(knn.neighbors(q), knn.neighbors(q) + k) == expected);
+  };
+  for (ESI::Index q : { 0u, 2097u, 2098u, 2999u })
+    check(q);
+  // removals reach the lists of both parts through the reverse lists
+  ESI::Array<ESI::Index> changed;
+  for (ESI::Index removed : { 2097u, 2098u, 10u, 2500u })
+  {
+    knn.remove(removed, changed);
+    present.erase(std::find(present.begin(), present.end(), removed));
+    CHECK_FALSE(changed.empty());
+    for (ESI::Index q : changed)
+      check(q);
+  }
+
+  std::size_t calls = 0;
+  ESI::Decremental_knn stopped(p, k);
+  CHECK_FALSE(stopped.initialize<CGAL::Sequential_tag>([&](double) {
     ++calls;
     return false;
   }));

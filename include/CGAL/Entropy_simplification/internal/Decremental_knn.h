@@ -50,10 +50,8 @@ public:
       m_k(k),
       m_capacity(2 * k),
       m_block(k + k / 2 + 2),
-      m_candidates(points.size() * m_capacity),
       m_count(points.size(), 0),
       m_present(points.size(), 1),
-      m_reverse(points.size() * m_block),
       m_reverse_count(points.size(), 0)
   {
     if (k == 0 || k > largest_k)
@@ -68,19 +66,31 @@ public:
   // The k nearest present neighbours of `i`, nearest first.
   const Index* neighbors(Index i) const { return &m_candidates[std::size_t(i) * m_capacity]; }
 
-  // Fills every candidate list, then the reverse lists. `progress(done)` is
-  // called between blocks of points, on the calling thread; returns false
-  // when it asked to stop.
+  // Fills every candidate list, then the reverse lists, which count for 80%
+  // and 20% of the fraction done that `progress` receives between blocks of
+  // points, on the calling thread; returns false when it asked to stop. The
+  // lists' arrays, large with a large k (1.3 GB at 300,000 points and
+  // k = 300), grow 4M entries at a time, so that a stop is seen meanwhile.
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    if (!for_each_index<ConcurrencyTag>(m_points.size(), [&](std::size_t i) { fill_candidates(Index(i)); },
-                                        progress))
-      return false;
-    for (Index q = 0; q < Index(m_points.size()); ++q)
-      for (unsigned int j = 0; j < m_k; ++j)
-        add_reverse(neighbors(q)[j], q);
-    return true;
+    const std::size_t n = m_points.size();
+    const std::size_t part = (std::size_t(1) << 22) / m_capacity + 1;
+    m_candidates.reserve(n * m_capacity);
+    m_reverse.reserve(n * m_block);
+    return for_each_index_growing<ConcurrencyTag>(
+             n, part, [&](std::size_t points) { m_candidates.resize(points * m_capacity); },
+             [&](std::size_t i) { fill_candidates(Index(i)); }, share_of_progress(n, 0., 0.8, progress)) &&
+           for_each_index_growing<CGAL::Sequential_tag>(
+             n, part, [&](std::size_t points) { m_reverse.resize(points * m_block); }, [](std::size_t) {},
+             share_of_progress(n, 0.8, 0.1, progress)) &&
+           for_each_index<CGAL::Sequential_tag>(
+             n,
+             [&](std::size_t q) {
+               for (unsigned int j = 0; j < m_k; ++j)
+                 add_reverse(neighbors(Index(q))[j], Index(q));
+             },
+             share_of_progress(n, 0.9, 0.1, progress));
   }
 
   // Removes `p` and writes to `changed` the present points that had `p`

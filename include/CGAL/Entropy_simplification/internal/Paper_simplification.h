@@ -53,14 +53,10 @@ public:
   {
     const std::size_t n = m_points.size();
     // The neighbour search costs about as much as the two other passes.
-    auto report = [&](double first, double width) {
-      return [&progress, first, width, n](std::size_t done) { return progress(first + width * double(done) / double(n)); };
-    };
-
-    if (!m_knn.template initialize<ConcurrencyTag>(report(0., 0.5)))
+    if (!m_knn.template initialize<ConcurrencyTag>([&progress](double f) { return progress(0.5 * f); }))
       return false;
     if (!for_each_index<ConcurrencyTag>(
-          n, [&](std::size_t i) { refresh_angle(Index(i)); }, report(0.5, 0.3)))
+          n, [&](std::size_t i) { refresh_angle(Index(i)); }, share_of_progress(n, 0.5, 0.3, progress)))
       return false;
 
     Array<Indexed_heap::Entry> entries(n);
@@ -69,7 +65,7 @@ public:
           [&](std::size_t i) {
             entries[i] = Indexed_heap::Entry{ heap_key(Index(i)), m_points.input_position[i], Index(i) };
           },
-          report(0.8, 0.2)))
+          share_of_progress(n, 0.8, 0.2, progress)))
       return false;
     m_heap = Indexed_heap(std::move(entries), n);
     return true;

@@ -444,33 +444,23 @@ private:
 // The k nearest neighbours in `tree` of each point of `queries`, nearest
 // first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
 // k points besides each query. Returns false when `progress` asked to stop.
-// The table grows a part at a time: with a large k it is large (1.2 GB for
-// 300,000 points at k = 1000), and zeroed at once it took seconds in which
-// no stop was seen.
+// The table, large with a large k, grows 4M entries at a time.
 template <typename ConcurrencyTag, typename Progress>
 bool nearest_neighbor_table(const Point_tree& tree, const Array<Index>& queries, unsigned int k,
                             Array<Index>& table, const Progress& progress)
 {
-  const std::size_t rows_per_part = (std::max)(std::size_t(1), (std::size_t(1) << 22) / k);
   table.clear();
   table.reserve(queries.size() * std::size_t(k));
-  for (std::size_t first = 0; first < queries.size(); first += rows_per_part)
-  {
-    const std::size_t rows = (std::min)(rows_per_part, queries.size() - first);
-    table.resize((first + rows) * k);
-    if (!for_each_index<ConcurrencyTag>(
-          rows,
-          [&](std::size_t i) {
-            thread_local Array<Neighbor> best;
-            const std::size_t r = first + i;
-            tree.nearest(queries[r], k, best);
-            for (unsigned int j = 0; j < k; ++j)
-              table[r * k + j] = best[j].id;
-          },
-          [&](std::size_t done) { return progress(first + done); }))
-      return false;
-  }
-  return true;
+  return for_each_index_growing<ConcurrencyTag>(
+    queries.size(), (std::max)(std::size_t(1), (std::size_t(1) << 22) / k),
+    [&](std::size_t rows) { table.resize(rows * k); },
+    [&](std::size_t r) {
+      thread_local Array<Neighbor> best;
+      tree.nearest(queries[r], k, best);
+      for (unsigned int j = 0; j < k; ++j)
+        table[r * k + j] = best[j].id;
+    },
+    progress);
 }
 
 } // namespace internal
