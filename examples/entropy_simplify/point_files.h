@@ -109,7 +109,7 @@ inline Cloud read_cloud(std::string_view bytes, Format format)
   }
   case Format::las:
     cloud.las = read_las(bytes);
-    cloud.notes = cloud.las->notes;
+    cloud.notes = std::move(cloud.las->notes);
     break;
   }
   if (cloud.size() == 0)

@@ -294,6 +294,12 @@ private:
     return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   }
 
+  static std::string name_of(const std::string& path)
+  {
+    const std::size_t slash = path.rfind('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+  }
+
   // A symbolic link is written through, to the file it names.
   static std::string resolve_links(const std::string& path)
   {
@@ -337,7 +343,7 @@ private:
   // computation: the temporary file's name is cut to fit, the target's is not.
   void refuse_long_name() const
   {
-    const std::string name = target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1);
+    const std::string name = name_of(target_);
     const long longest = ::pathconf(folder_of(target_).c_str(), _PC_NAME_MAX);
     if (longest > 0 && name.size() > std::size_t(longest))
       throw Output_error("cannot write '" + path_ + "': " + safe_output_detail::reason(ENAMETOOLONG) + " (" +
@@ -350,8 +356,7 @@ private:
     const std::string folder = folder_of(target_);
     // the temporary name adds 8 characters: cut a long name so that it stays
     // within the 255 a file name may have
-    const std::string name =
-      target_.substr(target_.rfind('/') == std::string::npos ? 0 : target_.rfind('/') + 1).substr(0, 200);
+    const std::string name = name_of(target_).substr(0, 200);
     std::string pattern = folder + "/." + name + ".XXXXXX";
     if (pattern.size() >= PATH_MAX)
       throw Output_error("cannot write '" + path_ + "': the path is too long");
