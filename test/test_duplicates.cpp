@@ -13,6 +13,9 @@
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <map>
+#include <tuple>
 #include <vector>
 
 namespace ES = CGAL::Entropy_simplification;
@@ -166,5 +169,45 @@ TEST_CASE("200,000 copies of one point among 20,000: an exact count, at most one
     for (std::size_t i : test_runs::kept_positions(run))
       copies_kept += points[i] == copied ? 1 : 0;
     CHECK(copies_kept <= 1);
+  }
+}
+
+// The first equal point of each point, against a map from coordinates that
+// shares nothing with the buckets: on lattice points with many copies and
+// zeros written as -0.0, at sizes around the number of buckets' steps, with
+// the package's key and with one key for all points, as keys made to collide
+// would give, so that only the coordinates tell points apart.
+TEST_CASE("Each point's first equal point is that of a map from coordinates", "[duplicates]")
+{
+  namespace ESI = ES::internal;
+  ESI::Portable_random random(41);
+  for (std::size_t n : { 0, 1, 2, 5, 17, 1000, 60000 })
+  {
+    ESI::Array<ESI::Working_point> points;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      auto coordinate = [&random] {
+        const double c = double(random.below(5)) - 2.;
+        return c == 0. && random.below(2) == 0 ? -0. : c;
+      };
+      const double x = coordinate(), y = coordinate(), z = coordinate();
+      points.emplace_back(x, y, i % 3 == 0 ? z : 0.25 * double(i % 97));
+    }
+    std::map<std::tuple<double, double, double>, ESI::Index> first_of;
+    std::vector<ESI::Index> expected;
+    for (std::size_t i = 0; i < n; ++i)
+      expected.push_back(first_of.emplace(std::make_tuple(points[i].x(), points[i].y(), points[i].z()), ESI::Index(i))
+                           .first->second);
+    auto same_key = [](const ESI::Working_point&) { return std::uint64_t(42); };
+    const ESI::Array<ESI::Index> sequential = ESI::first_equal_points<CGAL::Sequential_tag>(points);
+    const ESI::Array<ESI::Index> colliding = ESI::first_equal_points<CGAL::Sequential_tag>(points, same_key);
+    CHECK(std::vector<ESI::Index>(sequential.begin(), sequential.end()) == expected);
+    CHECK(std::vector<ESI::Index>(colliding.begin(), colliding.end()) == expected);
+#ifdef CGAL_LINKED_WITH_TBB
+    const ESI::Array<ESI::Index> parallel = ESI::first_equal_points<CGAL::Parallel_tag>(points);
+    CHECK(std::vector<ESI::Index>(parallel.begin(), parallel.end()) == expected);
+#endif
+    if (n == 60000)
+      CHECK(first_of.size() < 20000); // copies are the rule, not the exception
   }
 }

@@ -230,7 +230,7 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    in `Mode::paper`, when fewer than `k + 1` points would be kept, or when
    `Options::reference_normal` is null or not finite.
 
-   Coincident points are valid input and cost no more than the sort that
+   Coincident points are valid input and cost no more than the search that
    finds them, however many copies there are. Points that differ by any
    amount, however small, are distinct. In `Mode::paper`, a planar cloud
    gives every point the same importance, so points are removed in input

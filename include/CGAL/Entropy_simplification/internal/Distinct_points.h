@@ -10,7 +10,9 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <functional>
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <tuple>
 #include <utility>
 
@@ -37,43 +39,94 @@ struct Distinct_points
   std::size_t size() const { return input_position.size(); }
 };
 
-// Sorting is O(n log n) whatever the number of copies, and sorting by
-// coordinates then position makes the first of each run of equal points the
-// earliest in input order.
-// The order is total (positions differ), so a parallel sort gives the same.
+// A 64-bit mix of a point's coordinates: equal points (as doubles, so -0.0
+// and 0.0 alike) have equal keys, and distinct points rarely do.
+inline std::uint64_t coordinate_key(const Working_point& p)
+{
+  auto mixed = [](std::uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdULL;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ULL;
+    return h ^ (h >> 33);
+  };
+  std::uint64_t key = 0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double c = p.cartesian(d) == 0. ? 0. : p.cartesian(d);
+    std::uint64_t bits;
+    std::memcpy(&bits, &c, sizeof bits);
+    key = mixed(key ^ bits);
+  }
+  return key;
+}
+
+// For each point, the input position of the first point equal to it, its
+// own when none comes before it. The points go into buckets by their keys'
+// leading bits, about four to a bucket, in input order; each bucket is
+// sorted by key, then coordinates, then position, so that equal points
+// follow each other, the first in input order first. Coordinates are read
+// only where keys are equal, and a bucket sorts in O(m log m) even where
+// keys collide, as a file made to collide would make them. A sort of the
+// whole cloud by coordinates took twice as long.
+template <typename ConcurrencyTag, typename Key = std::uint64_t (*)(const Working_point&)>
+Array<Index> first_equal_points(const Array<Working_point>& points, const Key& key_of = coordinate_key)
+{
+  struct Keyed_position
+  {
+    std::uint64_t key;
+    Index position;
+  };
+  const std::size_t n = points.size();
+  int bits = 0;
+  while (bits < 24 && (std::size_t(4) << bits) < n)
+    ++bits;
+  auto bucket_of = [bits](std::uint64_t key) { return bits == 0 ? std::size_t(0) : std::size_t(key >> (64 - bits)); };
+
+  Array<Keyed_position> keyed(n);
+  for_each_index<ConcurrencyTag>(
+    n, [&](std::size_t i) { keyed[i] = Keyed_position{ key_of(points[i]), Index(i) }; },
+    [](std::size_t) { return true; });
+  Array<std::size_t> bucket_start((std::size_t(1) << bits) + 1, 0);
+  for (const Keyed_position& k : keyed)
+    ++bucket_start[bucket_of(k.key) + 1];
+  for (std::size_t b = 1; b < bucket_start.size(); ++b)
+    bucket_start[b] += bucket_start[b - 1];
+  Array<Keyed_position> by_bucket(n);
+  Array<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+  for (const Keyed_position& k : keyed)
+    by_bucket[next[bucket_of(k.key)]++] = k;
+  Array<Keyed_position>().swap(keyed);
+
+  auto before = [&points](const Keyed_position& a, const Keyed_position& b) {
+    if (a.key != b.key)
+      return a.key < b.key;
+    const Working_point &p = points[a.position], &q = points[b.position];
+    return std::make_tuple(p.x(), p.y(), p.z(), a.position) < std::make_tuple(q.x(), q.y(), q.z(), b.position);
+  };
+  Array<Index> first(n);
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t i) { first[i] = Index(i); }, [](std::size_t) { return true; });
+  for_each_index<ConcurrencyTag>(
+    bucket_start.size() - 1,
+    [&](std::size_t b) {
+      Keyed_position* const begin = by_bucket.data() + bucket_start[b];
+      Keyed_position* const end = by_bucket.data() + bucket_start[b + 1];
+      std::sort(begin, end, before);
+      for (Keyed_position* k = begin + 1; k < end; ++k)
+        if (k->key == k[-1].key && points[k->position] == points[k[-1].position])
+          first[k->position] = first[k[-1].position];
+    },
+    [](std::size_t) { return true; });
+  return first;
+}
+
+// The representatives move to the front of `points`, in input order: each
+// goes to a slot at or before its own, so the compaction is in place. The
+// slot of each representative is where it goes.
 template <typename ConcurrencyTag>
 Distinct_points collapse_duplicates(Array<Working_point> points)
 {
-  // the copies are sorted themselves, not their indices: a sort that moves
-  // them reads memory in order, where one through indices would not
-  struct Positioned_point
-  {
-    std::tuple<double, double, double, Index> key;
-    bool operator<(const Positioned_point& other) const { return key < other.key; }
-  };
-  Array<Positioned_point> sorted(points.size());
-  for_each_index<ConcurrencyTag>(
-    points.size(),
-    [&](std::size_t i) { sorted[i].key = std::make_tuple(points[i].x(), points[i].y(), points[i].z(), Index(i)); },
-    [](std::size_t) { return true; });
-  sort_by<ConcurrencyTag>(sorted.begin(), sorted.end(), std::less<Positioned_point>());
-
-  // the input position of the representative of each point
-  Array<Index> first(points.size());
-  Index representative = 0;
-  for (std::size_t r = 0; r < sorted.size(); ++r)
-  {
-    const auto& [x, y, z, position] = sorted[r].key;
-    const auto& [px, py, pz, previous] = sorted[r == 0 ? 0 : r - 1].key;
-    if (r == 0 || !(x == px && y == py && z == pz))
-      representative = position;
-    first[position] = representative;
-  }
-  Array<Positioned_point>().swap(sorted);
-
-  // The representatives move to the front of `points`, in input order: each
-  // goes to a slot at or before its own, so the compaction is in place. The
-  // slot of each representative is where it goes.
+  const Array<Index> first = first_equal_points<ConcurrencyTag>(points);
   Distinct_points result;
   Array<Index> slot(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
