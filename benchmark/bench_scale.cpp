@@ -116,6 +116,8 @@ struct Case
   Result result;
   long peak_kib = 0;
   std::string verdict;
+  // the time of each round, and the read's for the pca pass
+  std::vector<double> rounds, read_rounds;
 };
 
 std::string input_file(const std::string& work, std::size_t n)
@@ -320,6 +322,8 @@ void run_cases(std::vector<Case>& cases, int runs, const std::string& work, cons
       continue;
     cases[c].result.seconds = median(seconds[c]);
     cases[c].result.read_seconds = median(read_seconds[c]);
+    cases[c].rounds = seconds[c];
+    cases[c].read_rounds = read_seconds[c];
     const std::size_t expected = ES::internal::kept_count_from_percentage(cases[c].n, percentage);
     if (cases[c].kind != Kind::pca && cases[c].result.kept != expected)
       cases[c].verdict = thousands(cases[c].result.kept) + " kept instead of " + thousands(expected);
@@ -336,6 +340,22 @@ const Case* find(const std::vector<Case>& cases, std::size_t n, Kind kind)
 
 // The pca pass, read included, as the program's reference.
 double read_and_pca(const Case& pca) { return pca.result.read_seconds + pca.result.seconds; }
+
+// The ratio of a case's time to the pca pass's (read included for the
+// program) in each round: the pass varies more than the package on this
+// shared machine, so a ratio is taken between runs of the same round. The
+// one ratio of their medians when they did not run in the same rounds.
+
+std::vector<double> ratios_by_round(const Case& c, const Case& pca, bool with_read)
+{
+  std::vector<double> ratios;
+  if (c.rounds.size() == pca.rounds.size())
+    for (std::size_t r = 0; r < c.rounds.size(); ++r)
+      ratios.push_back(c.rounds[r] / (pca.rounds[r] + (with_read ? pca.read_rounds[r] : 0.)));
+  else
+    ratios.push_back(c.result.seconds / (with_read ? read_and_pca(pca) : pca.result.seconds));
+  return ratios;
+}
 
 // --- the report ------------------------------------------------------------
 
@@ -356,8 +376,7 @@ std::string times_table(const std::vector<Case>& cases, const std::vector<std::s
     };
     auto ratio = [&](Kind kind, bool with_read) {
       const Case* c = find(cases, n, kind);
-      return c && pca ? fixed(c->result.seconds / (with_read ? read_and_pca(*pca) : pca->result.seconds), 2) + "x"
-                      : std::string("-");
+      return c && pca ? fixed(median(ratios_by_round(*c, *pca, with_read)), 2) + "x" : std::string("-");
     };
     s << "| " << thousands(n) << " | " << seconds(Kind::default_2) << " | " << seconds(Kind::default_1) << " | "
       << seconds(Kind::paper_2) << " | " << seconds(Kind::pca) << " | "
@@ -397,29 +416,42 @@ std::string verdict(double measured, double bound, const std::string& unit)
          (measured <= bound ? "**met**" : "**missed**");
 }
 
+// The verdict on the median of the ratios of the rounds, with their range
+// and the number of rounds within the target when there are several: a
+// median near the bound may be met in one run and missed in the next.
+std::string verdict_by_round(const std::vector<double>& ratios, double bound)
+{
+  if (ratios.size() < 2)
+    return verdict(ratios.front(), bound, "x");
+  const auto [low, high] = std::minmax_element(ratios.begin(), ratios.end());
+  const long within = std::count_if(ratios.begin(), ratios.end(), [bound](double r) { return r <= bound; });
+  return verdict(median(ratios), bound, "x") + "; rounds " + fixed(*low, 3) + "x to " + fixed(*high, 3) +
+         "x, within the target in " + std::to_string(within) + " of " + std::to_string(ratios.size());
+}
+
 std::string targets(const std::vector<Case>& cases, const std::vector<std::size_t>& sizes)
 {
   std::ostringstream s;
-  auto ratio_to_pca = [&](std::size_t n, Kind kind, bool with_read) -> double {
+  auto ratio_to_pca = [&](std::size_t n, Kind kind, bool with_read, double bound) {
     const Case* c = find(cases, n, kind);
     const Case* pca = find(cases, n, Kind::pca);
-    return c && pca ? c->result.seconds / (with_read ? read_and_pca(*pca) : pca->result.seconds) : -1.;
+    return c && pca ? verdict_by_round(ratios_by_round(*c, *pca, with_read), bound) : std::string("not measured");
   };
   const std::size_t million = 1000000, ten_million = 10000000;
   if (find(cases, million, Kind::default_2))
   {
-    s << "- 1,000,000 points to 10%, the library, 2 threads: " << verdict(ratio_to_pca(million, Kind::default_2, false), 0.4, "x")
-      << " the pca pass.\n"
-      << "- The same, 1 thread: " << verdict(ratio_to_pca(million, Kind::default_1, false), 1.0, "x")
-      << " the pca pass (stretch: 0.7x).\n"
-      << "- The paper's mode, 1,000,000 points, 2 threads: "
-      << verdict(ratio_to_pca(million, Kind::paper_2, false), 1.5, "x") << " the pca pass; peak "
+    s << "- 1,000,000 points to 10%, the library, 2 threads, against the pca pass: "
+      << ratio_to_pca(million, Kind::default_2, false, 0.4) << ".\n"
+      << "- The same, 1 thread (stretch: 0.7x): " << ratio_to_pca(million, Kind::default_1, false, 1.0) << ".\n"
+      << "- The paper's mode, 1,000,000 points, 2 threads, against the pca pass: "
+      << ratio_to_pca(million, Kind::paper_2, false, 1.5) << "; peak "
       << verdict(double(find(cases, million, Kind::paper_2)->peak_kib) * 1024. / double(million), 150., " B/point")
       << ".\n";
   }
   if (const Case* program = find(cases, ten_million, Kind::program))
-    s << "- 10,000,000 points to 10%, the program from a binary PLY to a binary PLY, 2 threads: "
-      << verdict(ratio_to_pca(ten_million, Kind::program, true), 0.4, "x") << " the read + pca pass; peak "
+    s << "- 10,000,000 points to 10%, the program from a binary PLY to a binary PLY, 2 threads, against the read "
+         "+ pca pass: "
+      << ratio_to_pca(ten_million, Kind::program, true, 0.4) << "; peak "
       << verdict(double(program->peak_kib) * 1024. / double(ten_million), 150., " B/point") << ".\n";
   const Case* first = find(cases, sizes.front(), Kind::default_2);
   const Case* last = find(cases, sizes.back(), Kind::default_2);
@@ -447,7 +479,9 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<std::size
     << (runs > 1 ? "the median of " + std::to_string(runs) +
                      " runs up to 1,000,000 points, in rounds that run every case of a size once, one run above"
                  : std::string("one run"))
-    << ". Peak: the maximum resident set size of the process (as `/usr/bin/time -v` reports it); for the library, "
+    << ". Ratios: in each round, a case's time over the pca pass's, the median of those ratios (on this shared "
+       "machine the pass varies more than the package from one run to the next); the targets give their range "
+       "too. Peak: the maximum resident set size of the process (as `/usr/bin/time -v` reports it); for the library, "
        "less the copy of the input the check keeps, so the input range itself is counted.\n\n"
     << "### Targets (issue 10)\n\n"
     << targets(cases, sizes) << "\n### Time\n\n"
