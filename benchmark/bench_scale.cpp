@@ -277,10 +277,12 @@ Result measure_program(const std::string& program, const std::string& file, cons
   return r;
 }
 
+// The middle value, or the mean of the two middle ones.
 double median(std::vector<double> v)
 {
   std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+  const std::size_t middle = v.size() / 2;
+  return v.size() % 2 == 1 ? v[middle] : (v[middle - 1] + v[middle]) / 2.;
 }
 
 // Runs a case once, in a process of its own, adding its time to `seconds`
@@ -444,9 +446,11 @@ std::string targets(const std::vector<Case>& cases, const std::vector<std::size_
       << ratio_to_pca(million, Kind::default_2, false, 0.4) << ".\n"
       << "- The same, 1 thread (stretch: 0.7x): " << ratio_to_pca(million, Kind::default_1, false, 1.0) << ".\n"
       << "- The paper's mode, 1,000,000 points, 2 threads, against the pca pass: "
-      << ratio_to_pca(million, Kind::paper_2, false, 1.5) << "; peak "
-      << verdict(double(find(cases, million, Kind::paper_2)->peak_kib) * 1024. / double(million), 150., " B/point")
-      << ".\n";
+      << ratio_to_pca(million, Kind::paper_2, false, 1.5) << "; peak ";
+    if (const Case* paper = find(cases, million, Kind::paper_2))
+      s << verdict(double(paper->peak_kib) * 1024. / double(million), 150., " B/point") << ".\n";
+    else
+      s << "not measured.\n";
   }
   if (const Case* program = find(cases, ten_million, Kind::program))
     s << "- 10,000,000 points to 10%, the program from a binary PLY to a binary PLY, 2 threads, against the read "
@@ -529,11 +533,18 @@ void write_chart(const std::string& results, const std::vector<Case>& cases, con
         "     '' using 1:6 with linespoints title 'program, 2 threads', \\\n"
         "     '' using 1:2 with linespoints dashtype 2 title 'read + pca pass'\n";
   std::ofstream csv(results + "/scale.csv");
-  csv << "points,case,seconds,read_seconds,peak_kib,kept,verdict\n";
+  // the times of the rounds too, from which the ratios are taken
+  auto joined = [](const std::vector<double>& values) {
+    std::string text;
+    for (double v : values)
+      text += (text.empty() ? "" : " ") + fixed(v, 4);
+    return text;
+  };
+  csv << "points,case,seconds,read_seconds,peak_kib,kept,verdict,round_seconds,round_read_seconds\n";
   for (const Case& c : cases)
     csv << c.n << ',' << kind_key(c.kind) << ',' << fixed(c.result.seconds, 4) << ','
         << fixed(c.result.read_seconds, 4) << ',' << c.peak_kib << ',' << c.result.kept << ",\"" << c.verdict
-        << "\"\n";
+        << "\"," << joined(c.rounds) << ',' << joined(c.read_rounds) << "\n";
 }
 
 int usage()

@@ -87,16 +87,18 @@ Array<Index> first_equal_points(const Array<Working_point>& points, const Key& k
   for_each_index<ConcurrencyTag>(
     n, [&](std::size_t i) { keyed[i] = Keyed_position{ key_of(points[i]), Index(i) }; },
     [](std::size_t) { return true; });
-  Array<std::size_t> bucket_start((std::size_t(1) << bits) + 1, 0);
+  // 32-bit offsets, like the positions they count
+  Array<Index> bucket_start((std::size_t(1) << bits) + 1, 0);
   for (const Keyed_position& k : keyed)
     ++bucket_start[bucket_of(k.key) + 1];
   for (std::size_t b = 1; b < bucket_start.size(); ++b)
     bucket_start[b] += bucket_start[b - 1];
   Array<Keyed_position> by_bucket(n);
-  Array<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+  Array<Index> next(bucket_start.begin(), bucket_start.end() - 1);
   for (const Keyed_position& k : keyed)
     by_bucket[next[bucket_of(k.key)]++] = k;
   Array<Keyed_position>().swap(keyed);
+  Array<Index>().swap(next);
 
   auto before = [&points](const Keyed_position& a, const Keyed_position& b) {
     if (a.key != b.key)
@@ -109,6 +111,8 @@ Array<Index> first_equal_points(const Array<Working_point>& points, const Key& k
   for_each_index<ConcurrencyTag>(
     bucket_start.size() - 1,
     [&](std::size_t b) {
+      if (bucket_start[b + 1] - bucket_start[b] < 2)
+        return;
       Keyed_position* const begin = by_bucket.data() + bucket_start[b];
       Keyed_position* const end = by_bucket.data() + bucket_start[b + 1];
       std::sort(begin, end, before);
