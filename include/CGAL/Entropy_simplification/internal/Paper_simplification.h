@@ -121,17 +121,26 @@ private:
       refresh_angle(q);
 
     ++m_epoch;
+    m_refreshed.clear();
     auto refresh_importance = [this](Index r) {
       if (m_mark[r] == m_epoch)
         return;
       m_mark[r] = m_epoch;
-      m_heap.update(r, heap_key(r));
+      m_refreshed.push_back(r);
     };
     for (Index q : m_changed)
     {
       refresh_importance(q);
       m_knn.for_each_reverse_neighbor(q, refresh_importance);
     }
+    // the keys first, then the heap: the keys' reads are independent, so
+    // the processor overlaps their cache misses, which it does not across
+    // the branches of the sifts in between
+    m_keys.resize(m_refreshed.size());
+    for (std::size_t r = 0; r < m_refreshed.size(); ++r)
+      m_keys[r] = heap_key(m_refreshed[r]);
+    for (std::size_t r = 0; r < m_refreshed.size(); ++r)
+      m_heap.update(m_refreshed[r], m_keys[r]);
     return p;
   }
 
@@ -152,6 +161,8 @@ private:
   Array<Angle_term> m_angles;
   Indexed_heap m_heap{ {}, 0 };
   Array<Index> m_changed;
+  Array<Index> m_refreshed; // the points whose importance a removal changed
+  Array<double> m_keys;     // and their new keys
   Array<Index> m_mark; // removal at which a point's importance was last refreshed
   Index m_epoch = 0;
 };
