@@ -10,6 +10,7 @@
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
+#include <CGAL/Entropy_simplification/internal/prefetch.h>
 
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
@@ -101,11 +102,17 @@ public:
     m_tree->remove(p);
     if (2 * --m_present_count < m_tree_size)
       rebuild_tree();
+    // the lists this removal edits are scattered: their loads are started
+    // together, so that their cache misses overlap
+    for (unsigned int j = 0; j < m_k; ++j)
+      prefetch_list(m_reverse, neighbors(p)[j], m_block);
+    changed.clear();
+    for_each_reverse_neighbor(p, [&](Index q) {
+      changed.push_back(q);
+      prefetch_list(m_candidates, q, m_capacity);
+    });
     for (unsigned int j = 0; j < m_k; ++j)
       erase_reverse(neighbors(p)[j], p);
-
-    changed.clear();
-    for_each_reverse_neighbor(p, [&](Index q) { changed.push_back(q); });
     clear_reverse(p);
     for (Index q : changed)
     {
@@ -149,6 +156,14 @@ private:
       if (is_present(i))
         present.push_back(i);
     build_tree(present);
+  }
+
+  // Starts loading the list of `i` in `lists`, `size` entries per point
+  // (its two ends: a list spans one or two cache lines at k = 10).
+  static void prefetch_list(const Array<Index>& lists, Index i, std::size_t size)
+  {
+    prefetch(&lists[std::size_t(i) * size]);
+    prefetch(&lists[std::size_t(i) * size + size - 1]);
   }
 
   // Sets the candidate list of `q` to the first `capacity` entries of its
