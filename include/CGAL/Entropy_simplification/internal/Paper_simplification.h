@@ -14,6 +14,7 @@
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/normal_angle_entropy.h>
+#include <CGAL/Entropy_simplification/internal/prefetch.h>
 
 #include <cstddef>
 #include <utility>
@@ -117,6 +118,11 @@ private:
     const Index p = m_heap.top().id;
     m_heap.pop();
     m_knn.remove(p, m_changed);
+    // the scattered data of the loops below is loaded ahead, so that its
+    // cache misses overlap (see prefetch.h)
+    for (Index q : m_changed)
+      for (unsigned int j = 0; j < m_k; ++j)
+        prefetch(&m_points.points[m_knn.neighbors(q)[j]]);
     for (Index q : m_changed)
       refresh_angle(q);
 
@@ -136,6 +142,8 @@ private:
     // the keys first, then the heap: the keys' reads are independent, so
     // the processor overlaps their cache misses, which it does not across
     // the branches of the sifts in between
+    for (Index r : m_refreshed)
+      prefetch(m_knn.neighbors(r));
     m_keys.resize(m_refreshed.size());
     for (std::size_t r = 0; r < m_refreshed.size(); ++r)
       m_keys[r] = heap_key(m_refreshed[r]);
