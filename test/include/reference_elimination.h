@@ -507,34 +507,79 @@ inline std::size_t nearest_present(const std::vector<Point>& points, const std::
   return nearest.second;
 }
 
+// A member of a cell as its representative: the sum of its distances to the
+// members, in input order, and its squared distance to the farthest.
+struct Merits
+{
+  std::size_t member;
+  double distance_sum;
+  double squared_radius;
+};
+
+inline Merits merits_in_cell(const std::vector<Point>& points, const std::vector<std::size_t>& members,
+                             std::size_t member)
+{
+  Merits m{ member, 0., 0. };
+  for (std::size_t q : members)
+  {
+    m.distance_sum += std::sqrt(squared_distance(points[q], points[member]));
+    m.squared_radius = (std::max)(m.squared_radius, squared_distance(points[q], points[member]));
+  }
+  return m;
+}
+
+// The four members of a cell nearest its centroid (summed in input order),
+// nearest first, with their merits.
+inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, const std::vector<std::size_t>& members)
+{
+  double x = 0., y = 0., z = 0.;
+  for (std::size_t q : members)
+  {
+    x += points[q].x();
+    y += points[q].y();
+    z += points[q].z();
+  }
+  const double count = double(members.size());
+  const Point centroid(x / count, y / count, z / count);
+  std::vector<Neighbor> by_distance;
+  for (std::size_t q : members)
+    by_distance.emplace_back(squared_distance(points[q], centroid), q);
+  std::sort(by_distance.begin(), by_distance.end());
+  std::vector<Merits> candidates;
+  for (std::size_t j = 0; j < (std::min)(std::size_t(4), by_distance.size()); ++j)
+    candidates.push_back(merits_in_cell(points, members, by_distance[j].second));
+  return candidates;
+}
+
 // One iteration: every input point joins the cell of its nearest present
-// point, and each cell keeps its member nearest the cell's centroid. Sums and
-// scans run in input order.
+// point. Each cell keeps, among its four members nearest its centroid, the
+// one whose distances to the members sum least (ties: the lowest position),
+// leaving out those whose farthest member is farther than the farthest member
+// of any cell from that cell's member nearest its centroid.
 inline std::vector<bool> lloyd_step(const std::vector<Point>& points, const std::vector<bool>& present)
 {
   const std::size_t n = points.size();
-  std::vector<std::size_t> cell(n);
-  std::vector<std::array<double, 4> > sum(n, { 0., 0., 0., 0. }); // x, y, z, count
+  std::vector<std::vector<std::size_t> > members(n);
   for (std::size_t p = 0; p < n; ++p)
-  {
-    cell[p] = nearest_present(points, present, p);
-    sum[cell[p]][0] += points[p].x();
-    sum[cell[p]][1] += points[p].y();
-    sum[cell[p]][2] += points[p].z();
-    sum[cell[p]][3] += 1.;
-  }
-  // the member nearest the centroid of each cell
-  std::vector<Neighbor> best(n, Neighbor{ std::numeric_limits<double>::infinity(), n });
-  for (std::size_t p = 0; p < n; ++p)
-  {
-    const std::array<double, 4>& s = sum[cell[p]];
-    const Point centroid(s[0] / s[3], s[1] / s[3], s[2] / s[3]);
-    best[cell[p]] = (std::min)(best[cell[p]], Neighbor{ squared_distance(points[p], centroid), p });
-  }
+    members[nearest_present(points, present, p)].push_back(p);
+  std::vector<std::vector<Merits> > candidates(n);
+  double bound = 0.;
+  for (std::size_t c = 0; c < n; ++c)
+    if (present[c])
+    {
+      candidates[c] = candidates_of_cell(points, members[c]);
+      bound = (std::max)(bound, candidates[c].front().squared_radius);
+    }
   std::vector<bool> relocated(n, false);
   for (std::size_t c = 0; c < n; ++c)
     if (present[c])
-      relocated[best[c].second] = true;
+    {
+      Merits best = candidates[c].front();
+      for (const Merits& m : candidates[c])
+        if (m.squared_radius <= bound && std::make_pair(m.distance_sum, m.member) < std::make_pair(best.distance_sum, best.member))
+          best = m;
+      relocated[best.member] = true;
+    }
   return relocated;
 }
 

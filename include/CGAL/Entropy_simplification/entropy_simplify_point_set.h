@@ -106,9 +106,12 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    of any reference plane, measured against the cloud's own noise (its
    median), at the scale of `k` and at a coarser scale. The radius also
    grows where the input is sparse, so that the kept density follows the
-   input's to the power 2/3. Two iterations of Lloyd's relaxation restricted
-   to the input points end it. Flat regions thin evenly, without holes; the
-   user manual gives the reasoning and the measurements.
+   input's to the power 2/3. Two iterations of a relaxation restricted to the
+   input points end it: each kept point gives way to the median of its
+   Voronoi cell among the input points, the member whose distances to the
+   others sum least among the four nearest the cell's centroid. Flat regions
+   thin evenly, without holes; the user manual gives the reasoning and the
+   measurements.
 
    <b>`Mode::paper`, the paper's method,</b> with `N(p)` taken among the
    points still present:

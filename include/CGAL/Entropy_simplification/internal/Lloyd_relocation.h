@@ -14,6 +14,8 @@
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -89,35 +91,115 @@ Cell_members members_by_cell(const Indexed_points& points, const Voronoi_cells& 
   return result;
 }
 
-// The member of a cell nearest its centroid (ties by input position). The
-// centroid sums its members in input order, so that it does not depend on
-// the internal order.
-inline Index member_nearest_centroid(const Indexed_points& points, const Index* first, const Index* beyond)
+// The members that may represent a cell: the few nearest its centroid.
+// Among them, the one with the least sum of distances to the members suits
+// the mean distance to the kept points best (it is the median of the cell,
+// where the centroid is the mean). Taking 8 or 16 moved the mean distance by
+// under 0.05% on the benchmark's inputs.
+constexpr std::size_t candidates_per_cell = 4;
+
+// The members of a cell nearest its centroid, nearest first (ties by input
+// position): at most `wanted`, kept sorted by insertion. The centroid sums
+// the members in input order, so that it does not depend on the internal
+// order.
+inline std::array<Neighbor, candidates_per_cell> members_nearest_centroid(const Indexed_points& points,
+                                                                          const Index* first, const Index* beyond,
+                                                                          std::size_t wanted, std::size_t& count)
 {
   const Working_point centroid = centroid_of(std::size_t(beyond - first), [&](std::size_t j) -> const Working_point& {
     return points.points[first[j]];
   });
-  Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
+  std::array<Neighbor, candidates_per_cell> nearest;
+  count = 0;
   for (const Index* i = first; i != beyond; ++i)
   {
     const Neighbor candidate{ squared_distance(points.points[*i], centroid), points.input_position[*i], *i };
-    if (candidate < best)
-      best = candidate;
+    if (count == wanted && !(candidate < nearest[count - 1]))
+      continue;
+    std::size_t j = (std::min)(count, wanted - 1);
+    for (; j > 0 && candidate < nearest[j - 1]; --j)
+      nearest[j] = nearest[j - 1];
+    nearest[j] = candidate;
+    count = (std::min)(count + 1, wanted);
   }
-  return best.id;
+  return nearest;
 }
 
-// The member of each cell nearest its centroid, as the new present points.
+// A member's merits as the representative of its cell: the sum of its
+// distances to the members, summed in input order, and the square of the
+// greatest.
+struct Representative
+{
+  Neighbor member;
+  double distance_sum;
+  double squared_radius;
+};
+
+inline Representative merits(const Indexed_points& points, const Index* first, const Index* beyond, Neighbor member)
+{
+  Representative r{ member, 0., 0. };
+  for (const Index* i = first; i != beyond; ++i)
+  {
+    const double d2 = squared_distance(points.points[*i], points.points[member.id]);
+    r.distance_sum += std::sqrt(d2);
+    r.squared_radius = (std::max)(r.squared_radius, d2);
+  }
+  return r;
+}
+
+// The candidate of least distance sum (ties by input position) among those
+// whose radius is within `squared_bound`; the one nearest the centroid
+// always is, the bound being at least its radius.
+inline Index cell_median(const Indexed_points& points, const Index* first, const Index* beyond,
+                         double squared_bound)
+{
+  std::size_t count = 0;
+  const std::array<Neighbor, candidates_per_cell> nearest =
+    members_nearest_centroid(points, first, beyond, candidates_per_cell, count);
+  Representative best = merits(points, first, beyond, nearest[0]);
+  for (std::size_t c = 1; c < count; ++c)
+  {
+    const Representative r = merits(points, first, beyond, nearest[c]);
+    if (r.squared_radius <= squared_bound &&
+        (r.distance_sum < best.distance_sum ||
+         (r.distance_sum == best.distance_sum && r.member.input_position < best.member.input_position)))
+      best = r;
+  }
+  return best.member.id;
+}
+
+// The greatest radius of a cell about its member nearest its centroid. No
+// median moving a cell's radius beyond it, the input stays as near the kept
+// points as the members nearest the centroids would keep it.
 template <typename ConcurrencyTag>
-Array<char> members_nearest_centroids(const Indexed_points& points, const Voronoi_cells& cells)
+double greatest_centroid_radius(const Indexed_points& points, const Cell_members& cell)
+{
+  Array<double> squared_radius(cell.first.size() - 1);
+  for_each_index<ConcurrencyTag>(
+    squared_radius.size(),
+    [&](std::size_t c) {
+      const Index* first = cell.members.data() + cell.first[c];
+      const Index* beyond = cell.members.data() + cell.first[c + 1];
+      std::size_t count = 0;
+      squared_radius[c] =
+        merits(points, first, beyond, members_nearest_centroid(points, first, beyond, 1, count)[0]).squared_radius;
+    },
+    [](std::size_t) { return true; });
+  return squared_radius.empty() ? 0. : *std::max_element(squared_radius.begin(), squared_radius.end());
+}
+
+// The median of each cell, as the new present points.
+template <typename ConcurrencyTag>
+Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cells)
 {
   const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
+  const double squared_bound = greatest_centroid_radius<ConcurrencyTag>(points, cell);
   Array<Index> chosen(cells.sites.size());
   for_each_index<ConcurrencyTag>(
     cells.sites.size(),
     [&](std::size_t c) {
-      chosen[c] = member_nearest_centroid(points, cell.members.data() + cell.first[c],
-                                          cell.members.data() + cell.first[c + 1]);
+      chosen[c] = cell_median(points, cell.members.data() + cell.first[c], cell.members.data() + cell.first[c + 1],
+                              squared_bound);
     },
     [](std::size_t) { return true; });
   Array<char> present(points.size(), 0);
@@ -128,7 +210,7 @@ Array<char> members_nearest_centroids(const Indexed_points& points, const Vorono
 
 // Lloyd's relaxation restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
-// cell keeps its member nearest its centroid. The count does not change.
+// cell keeps its median (see cell_median). The count does not change.
 // Returns the pairs (point no longer present, point present instead), both
 // taken in input order.
 template <typename ConcurrencyTag>
@@ -138,7 +220,7 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
-    present = members_nearest_centroids<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present));
+    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present));
 
   Array<Index> gone, come;
   for (Index i : by_input)
