@@ -197,8 +197,8 @@ TEST_CASE("Ranks, default mode: the level is the direct call's result, the longe
 // and 1.017 above; radar at most 1.046 and 1.017. The prefixes are those of
 // the run before the relocation took the cells' medians (1.065 and 0.962 at
 // 1%, 1.048 and 1.054 at 5% then); the direct calls they are divided by
-// improved. The bounds keep the misses (1%, and 5% on b9_training) from
-// growing.
+// improved. The bounds hold 1.05 for the mean distance from 10%, and keep
+// the misses (1%, and 5% on b9_training) from growing.
 TEST_CASE("Ranks, default mode: prefixes at 1 to 50% against direct calls on two real scans",
           "[ranks][default][real data][quality]")
 {
@@ -227,7 +227,7 @@ TEST_CASE("Ranks, default mode: prefixes at 1 to 50% against direct calls on two
       const double plane_ratio = of_prefix.point_to_plane / of_direct.point_to_plane;
       INFO(name << ", " << percentage << "%: mean distance " << mean_ratio << "x, point-to-plane " << plane_ratio
                 << "x the direct call's");
-      CHECK(mean_ratio <= (percentage == 1. ? 1.1 : 1.06));
+      CHECK(mean_ratio <= (percentage == 1. ? 1.1 : percentage == 5. ? 1.055 : 1.05));
       CHECK(plane_ratio <= 1.06);
     }
   }

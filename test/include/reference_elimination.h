@@ -492,7 +492,8 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
 }
 
 // ----------------------------------------------------------------------------
-// Lloyd's relaxation restricted to the input points
+// The relocation: a relaxation in Lloyd's manner restricted to the input
+// points, each cell keeping its median
 // ----------------------------------------------------------------------------
 
 // The present point nearest `points[p]`, itself when present.
@@ -556,7 +557,7 @@ inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, 
 // one whose distances to the members sum least (ties: the lowest position),
 // leaving out those whose farthest member is farther than the farthest member
 // of any cell from that cell's member nearest its centroid.
-inline std::vector<bool> lloyd_step(const std::vector<Point>& points, const std::vector<bool>& present)
+inline std::vector<bool> relocation_step(const std::vector<Point>& points, const std::vector<bool>& present)
 {
   const std::size_t n = points.size();
   std::vector<std::vector<std::size_t> > members(n);
@@ -600,7 +601,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
     eliminated[p] = false;
   std::vector<bool> relocated = eliminated;
   for (int iteration = 0; iteration < 2; ++iteration)
-    relocated = lloyd_step(points, relocated);
+    relocated = relocation_step(points, relocated);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {

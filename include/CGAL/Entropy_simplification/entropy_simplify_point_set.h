@@ -109,9 +109,10 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    input's to the power 2/3. Two iterations of a relaxation restricted to the
    input points end it: each kept point gives way to the median of its
    Voronoi cell among the input points, the member whose distances to the
-   others sum least among the four nearest the cell's centroid. Flat regions
-   thin evenly, without holes; the user manual gives the reasoning and the
-   measurements.
+   others sum least among the four nearest the cell's centroid, unless that
+   would take a cell's farthest member farther than the members nearest the
+   centroids keep any. Flat regions thin evenly, without holes; the user
+   manual gives the reasoning and the measurements.
 
    <b>`Mode::paper`, the paper's method,</b> with `N(p)` taken among the
    points still present:
