@@ -13,6 +13,8 @@
 // RESULTS.md. Exits with 1 when a file cannot be read or a cell of the
 // baseline is missing from the current run.
 
+#include "bench_csv.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,23 +31,6 @@ namespace {
 constexpr double bound = 1.01;
 const char* const default_mode = "package default";
 
-// The fields of a CSV line; a field may be quoted, holding commas.
-std::vector<std::string> fields_of(const std::string& line)
-{
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (char c : line)
-  {
-    if (c == '"')
-      quoted = !quoted;
-    else if (c == ',' && !quoted)
-      fields.emplace_back();
-    else
-      fields.back() += c;
-  }
-  return fields;
-}
-
 struct Cell_quality
 {
   double mean = 0.;
@@ -61,7 +46,7 @@ Cells read_default_mode(const std::string& file)
   std::string line;
   if (!std::getline(in, line))
     throw std::runtime_error("cannot read " + file);
-  const std::vector<std::string> header = fields_of(line);
+  const std::vector<std::string> header = bench::fields_of(line);
   auto column = [&](const std::string& name) {
     const auto at = std::find(header.begin(), header.end(), name);
     if (at == header.end())
@@ -73,7 +58,7 @@ Cells read_default_mode(const std::string& file)
   Cells cells;
   while (std::getline(in, line))
   {
-    const std::vector<std::string> f = fields_of(line);
+    const std::vector<std::string> f = bench::fields_of(line);
     if (f.size() == header.size() && f[method] == default_mode)
       cells.push_back({ { f[input], std::stod(f[percent]) }, { std::stod(f[mean]), std::stod(f[plane]) } });
   }

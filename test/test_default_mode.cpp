@@ -17,6 +17,7 @@
 #include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
+#include <CGAL/Entropy_simplification/internal/simplify_points.h>
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -247,12 +248,74 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
 
 namespace {
 
+// The reference's terms, as the library's.
+reference::Terms reference_terms(const ESI::Default_mode_terms& t)
+{
+  return { t.coarse_scale, t.feature_budget, t.density, t.halving_stages, t.relocation, t.medians, t.radius_bound };
+}
+
+std::vector<std::size_t> as_positions(const ESI::Array<ESI::Index>& removed)
+{
+  return std::vector<std::size_t>(removed.begin(), removed.end());
+}
+
+} // namespace
+
+// The benchmark's ablation switches each term off in turn: the library then
+// still equals the reference, which leaves the term out with code of its own,
+// and each switch changes the removal order of at least one cloud, so that a
+// switch that did nothing would fail.
+TEST_CASE("Default mode: with each term switched off, the removal order equals the reference's",
+          "[default][reference][ablation]")
+{
+  test_parallel::require_tbb();
+  ES::Options options;
+  const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
+                                          Setting{ test_clouds::wavy_surface(600, 0.01, 4), 8 } };
+  std::vector<ESI::Term_switched_off> ablation = ESI::each_term_switched_off();
+  REQUIRE(ablation.size() == 7);
+  ablation.insert(ablation.begin(), { "none", ESI::Default_mode_terms() });
+  std::vector<std::vector<std::size_t> > with_all_terms;
+  for (const ESI::Term_switched_off& off : ablation)
+  {
+    const reference::Terms reference_off = reference_terms(off.terms);
+    const std::string term = off.term;
+    bool changes_an_order = false;
+    for (std::size_t s = 0; s < settings.size(); ++s)
+    {
+      const std::vector<Point>& points = settings[s].cloud.points;
+      const std::size_t target = points.size() / 5;
+      INFO(settings[s].cloud.name << ", term switched off: " << term);
+      const std::vector<std::size_t> expected = reference::removal_order(
+        points, reference::feature_field(points, settings[s].k, options, reference_off), target, reference_off);
+      const ESI::Array<ESI::Working_point> input(points.begin(), points.end());
+      CHECK(as_positions(ESI::removal_order_with_terms<CGAL::Sequential_tag>(input, settings[s].k, target, options,
+                                                                            off.terms)) == expected);
+      CHECK(as_positions(test_parallel::on_two_threads_or_more([&] {
+              return ESI::removal_order_with_terms<test_parallel::Parallel_tag>(input, settings[s].k, target,
+                                                                                options, off.terms);
+            })) == expected);
+      if (term == "none")
+      {
+        CHECK(expected == removals(simplify(points, settings[s].k,
+                                            CGAL::parameters::number_of_output_points(target), options)));
+        with_all_terms.push_back(expected);
+      }
+      changes_an_order = changes_an_order || expected != with_all_terms[s];
+    }
+    if (term != "none")
+      CHECK(changes_an_order);
+  }
+}
+
+namespace {
+
 // The removals of an engine that gathers `leaves_per_block` leaves at a time.
 std::vector<ESI::Index> engine_removals(const ESI::Indexed_points& indexed, unsigned int k, std::size_t target,
                                         std::size_t leaves_per_block)
 {
   return test_parallel::on_two_threads_or_more([&] {
-    ESI::Weighted_elimination engine(indexed, k, ES::Options(), leaves_per_block);
+    ESI::Weighted_elimination engine(indexed, k, ES::Options(), ESI::Default_mode_terms(), leaves_per_block);
     REQUIRE(engine.initialize<test_parallel::Parallel_tag>([](double) { return true; }));
     std::vector<ESI::Index> removed;
     REQUIRE(engine.remove_down_to<test_parallel::Parallel_tag>(target, [&](ESI::Index p) {

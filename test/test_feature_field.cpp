@@ -285,7 +285,7 @@ TEST_CASE("Feature field: the coarse scale reports its progress and stops when a
 
   std::vector<double> fractions;
   ESI::Array<double> strength;
-  REQUIRE(ESI::feature_strengths<CGAL::Sequential_tag>(points, k, ES::Normal_estimation::pca, entropy, strength,
+  REQUIRE(ESI::feature_strengths<CGAL::Sequential_tag>(points, k, ES::Normal_estimation::pca, entropy, true, strength,
                                                          [&](double f) {
                                                            fractions.push_back(f);
                                                            return true;
@@ -309,7 +309,7 @@ TEST_CASE("Feature field: the coarse scale reports its progress and stops when a
     bool stopped = false;
     ESI::Array<double> partial;
     const bool completed = ESI::feature_strengths<CGAL::Sequential_tag>(
-      points, k, ES::Normal_estimation::pca, entropy, partial, [&](double f) {
+      points, k, ES::Normal_estimation::pca, entropy, true, partial, [&](double f) {
         ++calls;
         calls_after_stop += stopped;
         stopped = stopped || f >= stop_from;

@@ -40,6 +40,19 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
 
+// The terms the default mode adds to weighted sample elimination, each of
+// which the ablation switches off: the manual's "What each term contributes".
+struct Terms
+{
+  bool coarse_scale = true;   // the strength is the greater of the two scales'
+  bool feature_budget = true; // the weight is lowered where features cover much
+  bool density = true;        // the radius follows the input's density
+  bool halving_stages = true; // each stage halves the count
+  bool relocation = true;     // the kept points are relocated
+  bool medians = true;        // each cell keeps its median
+  bool radius_bound = true;   // within the radius bound
+};
+
 // Every point is named by its input position; ties in distance go to the
 // lowest one, as the manual defines every order of the package.
 using Neighbor = std::pair<double, std::size_t>; // (squared distance, input position)
@@ -324,10 +337,12 @@ inline double budgeted_weight(double feature_weight, double feature_area, double
 // The radius factor of a point: 1 / sqrt(1 + w s), so that the kept density
 // grows by up to 1 + w on features, times the cube root of its share of the
 // area over the median share, within a factor 2, so that the kept density
-// follows the input's to the power 2/3.
-inline double radius_factor(double strength, double weight, double area, double typical_area)
+// follows the input's to the power 2/3 (unless `with_density` is false).
+inline double radius_factor(double strength, double weight, double area, double typical_area, bool with_density)
 {
-  const double density = typical_area > 0. ? (std::min)(2., (std::max)(0.5, std::cbrt(area / typical_area))) : 1.;
+  const double density = with_density && typical_area > 0.
+                           ? (std::min)(2., (std::max)(0.5, std::cbrt(area / typical_area)))
+                           : 1.;
   return 1. / std::sqrt(1. + weight * strength) * density;
 }
 
@@ -344,7 +359,8 @@ struct Field
   double weight = 0.;           // the feature weight after the budget
 };
 
-inline Field feature_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options)
+inline Field feature_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options,
+                           const Terms& terms = Terms())
 {
   const std::size_t n = points.size();
   std::vector<std::size_t> all(n);
@@ -364,7 +380,8 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
     // p's share of the area: k points in the disc reaching its k-th neighbour
     area[p] = CGAL_PI * squared_distance(points[p], points[fine.neighbors[p][k - 1]]) / double(k);
     field.fine_strength.push_back(feature_strength(fine.entropy[p], field.floor));
-    strength[p] = (std::max)(field.fine_strength[p], field.coarse_strength[p]);
+    strength[p] = terms.coarse_scale ? (std::max)(field.fine_strength[p], field.coarse_strength[p])
+                                     : field.fine_strength[p];
   }
   // No point counts for more than 1000 times the median area: a stray point
   // far from the rest would otherwise make every radius, hence every
@@ -380,11 +397,12 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
     total_area += area[p];
     feature_area += area[p] * strength[p];
   }
-  field.weight = budgeted_weight(options.feature_weight, feature_area, total_area);
+  field.weight = terms.feature_budget ? budgeted_weight(options.feature_weight, feature_area, total_area)
+                                      : options.feature_weight;
   const double typical_area = median(area);
   for (std::size_t p = 0; p < n; ++p)
   {
-    field.scale.push_back(radius_factor(strength[p], field.weight, area[p], typical_area));
+    field.scale.push_back(radius_factor(strength[p], field.weight, area[p], typical_area, terms.density));
     field.effective_area += area[p] / (field.scale[p] * field.scale[p]);
   }
   return field;
@@ -469,9 +487,10 @@ inline std::size_t most_crowded(const std::vector<std::int64_t>& weights, const 
 }
 
 // The input positions of the removed points, first removed first, from
-// the `present` points (all of them when empty).
+// the `present` points (all of them when empty); in one stage when not
+// `halving`.
 inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, const Field& field, std::size_t target,
-                                          std::vector<bool> present = {})
+                                          std::vector<bool> present = {}, bool halving = true)
 {
   if (present.empty())
     present.assign(points.size(), true);
@@ -479,7 +498,8 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
   std::vector<std::size_t> removed;
   while (count > target)
   {
-    const Stage stage = stage_from(count, target, field.effective_area);
+    const Stage stage = halving ? stage_from(count, target, field.effective_area)
+                                : stage_to(count, target, field.effective_area);
     const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
     for (; count > stage.target; --count)
     {
@@ -529,9 +549,10 @@ inline Merits merits_in_cell(const std::vector<Point>& points, const std::vector
   return m;
 }
 
-// The four members of a cell nearest its centroid (summed in input order),
-// nearest first, with their merits.
-inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, const std::vector<std::size_t>& members)
+// The `wanted` members of a cell nearest its centroid (summed in input
+// order), nearest first, with their merits.
+inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, const std::vector<std::size_t>& members,
+                                              std::size_t wanted)
 {
   double x = 0., y = 0., z = 0.;
   for (std::size_t q : members)
@@ -547,7 +568,7 @@ inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, 
     by_distance.emplace_back(squared_distance(points[q], centroid), q);
   std::sort(by_distance.begin(), by_distance.end());
   std::vector<Merits> candidates;
-  for (std::size_t j = 0; j < (std::min)(std::size_t(4), by_distance.size()); ++j)
+  for (std::size_t j = 0; j < (std::min)(wanted, by_distance.size()); ++j)
     candidates.push_back(merits_in_cell(points, members, by_distance[j].second));
   return candidates;
 }
@@ -556,8 +577,11 @@ inline std::vector<Merits> candidates_of_cell(const std::vector<Point>& points, 
 // point. Each cell keeps, among its four members nearest its centroid, the
 // one whose distances to the members sum least (ties: the lowest position),
 // leaving out those whose farthest member is farther than the farthest member
-// of any cell from that cell's member nearest its centroid.
-inline std::vector<bool> relocation_step(const std::vector<Point>& points, const std::vector<bool>& present)
+// of any cell from that cell's member nearest its centroid. Without
+// `terms.medians`, each cell keeps its member nearest its centroid; without
+// `terms.radius_bound`, no candidate is left out.
+inline std::vector<bool> relocation_step(const std::vector<Point>& points, const std::vector<bool>& present,
+                                         const Terms& terms)
 {
   const std::size_t n = points.size();
   std::vector<std::vector<std::size_t> > members(n);
@@ -568,7 +592,7 @@ inline std::vector<bool> relocation_step(const std::vector<Point>& points, const
   for (std::size_t c = 0; c < n; ++c)
     if (present[c])
     {
-      candidates[c] = candidates_of_cell(points, members[c]);
+      candidates[c] = candidates_of_cell(points, members[c], terms.medians ? 4 : 1);
       bound = (std::max)(bound, candidates[c].front().squared_radius);
     }
   std::vector<bool> relocated(n, false);
@@ -577,7 +601,7 @@ inline std::vector<bool> relocation_step(const std::vector<Point>& points, const
     {
       Merits best = candidates[c].front();
       for (const Merits& m : candidates[c])
-        if (m.squared_radius <= bound && std::make_pair(m.distance_sum, m.member) < std::make_pair(best.distance_sum, best.member))
+        if ((m.squared_radius <= bound || !terms.radius_bound) && std::make_pair(m.distance_sum, m.member) < std::make_pair(best.distance_sum, best.member))
           best = m;
       relocated[best.member] = true;
     }
@@ -591,17 +615,20 @@ inline std::vector<bool> relocation_step(const std::vector<Point>& points, const
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
 // relocation; the j-th point the relocation drops takes the place, in the
-// removal order, of the j-th point it brings in, both in input order.
+// removal order, of the j-th point it brings in, both in input order. The
+// `terms` switched off are left out.
 inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, const Field& field,
-                                              std::size_t target)
+                                              std::size_t target, const Terms& terms = Terms())
 {
-  std::vector<std::size_t> removed = eliminate(points, field, target);
+  std::vector<std::size_t> removed = eliminate(points, field, target, {}, terms.halving_stages);
+  if (!terms.relocation)
+    return removed;
   std::vector<bool> eliminated(points.size(), true);
   for (std::size_t p : removed)
     eliminated[p] = false;
   std::vector<bool> relocated = eliminated;
   for (int iteration = 0; iteration < 2; ++iteration)
-    relocated = relocation_step(points, relocated);
+    relocated = relocation_step(points, relocated, terms);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {

@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
@@ -141,13 +142,14 @@ inline void cap_isolated_areas(Array<double>& area)
 }
 
 // The factor of each point's interaction radius: the feature term, whose
-// weight the budget may lower, times the density term. Also sets the
+// weight the budget may lower, times the density term (either switched off
+// by `terms`). Also sets the
 // effective area, the sampled area weighted by the density each scale asks
 // for (1 / scale^2), summed in input order so that it does not depend on the
 // internal order.
 template <typename ConcurrencyTag>
 void set_scales(const Indexed_points& points, const Array<double>& area, const Array<double>& strength,
-                double feature_weight, Elimination_field& field)
+                double feature_weight, const Default_mode_terms& terms, Elimination_field& field)
 {
   const std::size_t n = points.size();
   double total_area = 0., feature_area = 0.;
@@ -156,7 +158,8 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
     total_area += area[i];
     feature_area += area[i] * strength[i];
   }
-  const double weight = budgeted_feature_weight(feature_weight, feature_area, total_area);
+  const double weight =
+    terms.feature_budget ? budgeted_feature_weight(feature_weight, feature_area, total_area) : feature_weight;
   const double typical_area = median(area);
 
   field.scale.resize(n);
@@ -164,7 +167,8 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
   for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
-      field.scale[i] = interaction_scale(strength[i], weight) * density_scale(area[i], typical_area);
+      field.scale[i] =
+        interaction_scale(strength[i], weight) * (terms.density ? density_scale(area[i], typical_area) : 1.);
       weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
     },
     [](std::size_t) { return true; });
@@ -218,13 +222,18 @@ inline Array<Index> coarse_points(const Indexed_points& points)
 
 // The feature strength of every point, to `strength`, from the entropy of
 // the normals of its neighbourhood: the greater of that of `entropy`, at the
-// scale of k, and that of the coarse scale (see coarse_points). `progress`
-// receives the fraction done; returns false when it asked to stop.
+// scale of k, and that of the coarse scale (see coarse_points), unless
+// `with_coarse_scale` is false. `progress` receives the fraction done;
+// returns false when it asked to stop.
 template <typename ConcurrencyTag, typename Progress>
 bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_estimation estimation,
-                       const Array<double>& entropy, Array<double>& strength, const Progress& progress)
+                       const Array<double>& entropy, bool with_coarse_scale, Array<double>& strength,
+                       const Progress& progress)
 {
-  if (!coarse_feature_strength<ConcurrencyTag>(points, coarse_points(points), k, estimation, strength, progress))
+  if (!with_coarse_scale)
+    strength.assign(points.size(), 0.);
+  else if (!coarse_feature_strength<ConcurrencyTag>(points, coarse_points(points), k, estimation, strength,
+                                                    progress))
     return false;
   const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
@@ -236,11 +245,13 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
 
 // The field from `knn`, the k nearest neighbours of each point nearest first
 // (those of point i at knn[i * k]), which it frees once used: the feature
-// strengths and the areas the points sample make the scales. The entropies
-// count for 60% of the progress, the coarse scale for the rest.
+// strengths and the areas the points sample make the scales, with the
+// `terms` switched on. The entropies count for 60% of the progress, the
+// coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
-                               Array<Index> knn, Elimination_field& field, const Progress& progress)
+                               const Default_mode_terms& terms, Array<Index> knn, Elimination_field& field,
+                               const Progress& progress)
 {
   Array<double> entropy;
   if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
@@ -251,11 +262,11 @@ bool compute_elimination_field(const Indexed_points& points, unsigned int k, con
   cap_isolated_areas(area);
   Array<Index>().swap(knn);
   Array<double> strength;
-  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, strength,
+  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, terms.coarse_scale, strength,
                                          [&](double f) { return progress(0.6 + 0.4 * f); }))
     return false;
   Array<double>().swap(entropy);
-  set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, field);
+  set_scales<ConcurrencyTag>(points, area, strength, options.feature_weight, terms, field);
   return true;
 }
 
@@ -273,7 +284,7 @@ Array<double> feature_strength_of_all(const Indexed_points& points, unsigned int
                                              [&](double f) { return progress(0.4 + 0.3 * f); }))
     return {};
   Array<Index>().swap(knn);
-  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, strength,
+  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, true, strength,
                                          [&](double f) { return progress(0.7 + 0.3 * f); }))
     return {};
   return strength;

@@ -8,6 +8,7 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LLOYD_RELOCATION_H
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -148,15 +149,16 @@ inline Merits merits_of(const Indexed_points& points, const Index* first, const 
   return r;
 }
 
-// The candidate of least distance sum (ties by input position) among those
-// whose radius is within `squared_bound`; the one nearest the centroid
-// always is, the bound being at least its radius.
-inline Index cell_median(const Indexed_points& points, const Index* first, const Index* beyond,
-                         double squared_bound)
+// The candidate of least distance sum (ties by input position) among the
+// `candidates` members nearest the centroid whose radius is within
+// `squared_bound`; the one nearest the centroid always is, the bound being
+// at least its radius.
+template <std::size_t candidates>
+Index cell_median(const Indexed_points& points, const Index* first, const Index* beyond, double squared_bound)
 {
   std::size_t count = 0;
   const std::array<Neighbor, candidates_per_cell> nearest =
-    members_nearest_centroid<candidates_per_cell>(points, first, beyond, count);
+    members_nearest_centroid<candidates>(points, first, beyond, count);
   Merits best = merits_of(points, first, beyond, nearest[0]);
   for (std::size_t c = 1; c < count; ++c)
   {
@@ -192,18 +194,24 @@ double greatest_squared_radius_about_centroids(const Indexed_points& points, con
   return squared_radius.empty() ? 0. : *std::max_element(squared_radius.begin(), squared_radius.end());
 }
 
-// The median of each cell, as the new present points.
+// The median of each cell, as the new present points; with the `terms`
+// medians or radius_bound switched off, the member nearest the centroid, or
+// the median whatever its radius.
 template <typename ConcurrencyTag>
-Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cells)
+Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cells, const Default_mode_terms& terms)
 {
   const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
-  const double squared_bound = greatest_squared_radius_about_centroids<ConcurrencyTag>(points, cell);
+  const double squared_bound = terms.radius_bound
+                                 ? greatest_squared_radius_about_centroids<ConcurrencyTag>(points, cell)
+                                 : std::numeric_limits<double>::infinity();
   Array<Index> chosen(cells.sites.size());
   for_each_index<ConcurrencyTag>(
     cells.sites.size(),
     [&](std::size_t c) {
-      chosen[c] = cell_median(points, cell.members.data() + cell.first[c], cell.members.data() + cell.first[c + 1],
-                              squared_bound);
+      const Index* first = cell.members.data() + cell.first[c];
+      const Index* beyond = cell.members.data() + cell.first[c + 1];
+      chosen[c] = terms.medians ? cell_median<candidates_per_cell>(points, first, beyond, squared_bound)
+                                : cell_median<1>(points, first, beyond, squared_bound);
     },
     [](std::size_t) { return true; });
   Array<char> present(points.size(), 0);
@@ -214,17 +222,18 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
 
 // A relaxation in Lloyd's manner restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
-// cell keeps its median (see cell_median). The count does not change.
+// cell keeps its median (see cell_medians, and `terms`). The count does not
+// change.
 // Returns the pairs (point no longer present, point present instead), both
 // taken in input order.
 template <typename ConcurrencyTag>
-Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points,
-                                                            Array<char>& present, int iterations)
+Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points, Array<char>& present,
+                                                      int iterations, const Default_mode_terms& terms)
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
-    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present));
+    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
 
   Array<Index> gone, come;
   for (Index i : by_input)

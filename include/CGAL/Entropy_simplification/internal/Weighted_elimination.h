@@ -9,6 +9,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
@@ -92,10 +93,12 @@ public:
   // (see gather_neighbors); the result does not depend on it. The default,
   // about 30,000 points, keeps the lists in the making small.
   Weighted_elimination(const Indexed_points& points, unsigned int k, const Options& options,
+                       const Default_mode_terms& terms = Default_mode_terms(),
                        std::size_t leaves_per_block = std::size_t(1) << 11)
     : m_points(points),
       m_k(k),
       m_options(options),
+      m_terms(terms),
       m_leaves_per_block((std::max)(std::size_t(1), leaves_per_block)),
       m_present(points.size(), 1),
       m_count(points.size())
@@ -109,7 +112,7 @@ public:
   {
     Array<Index> knn;
     if (!nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) ||
-        !compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, std::move(knn), m_field,
+        !compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
                                                    [&](double f) { return progress(0.5 + 0.5 * f); }))
       return false;
     // listed once the field's memory is released
@@ -153,7 +156,8 @@ public:
       const Elimination_stage stage =
         m_level_cells ? stage_down_to(m_count, (std::max)(target, level_boundary_below(m_count, m_points.size())),
                                       m_field.effective_area)
-                      : next_stage(m_count, target, m_field.effective_area);
+                      : m_terms.halving_stages ? next_stage(m_count, target, m_field.effective_area)
+                                               : stage_down_to(m_count, target, m_field.effective_area);
       gather_neighbors<ConcurrencyTag>(stage);
       Array<Index> stage_removed = eliminate<ConcurrencyTag>(stage);
       if (m_level_cells && stage.target > target)
@@ -535,6 +539,7 @@ private:
   const Indexed_points& m_points;
   const unsigned int m_k;
   const Options m_options;
+  const Default_mode_terms m_terms;
   // leaves gathered in parallel before their lists are appended
   const std::size_t m_leaves_per_block;
   Elimination_field m_field;

@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Lloyd_relocation.h>
@@ -79,13 +80,13 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
 // The relocation that ends the default mode. A relocated point takes the
 // place, in the removal order, of the point that replaces it.
 template <typename ConcurrencyTag>
-void relocate(const Indexed_points& points, Engine_run& run)
+void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms)
 {
   Array<char> present = present_after(run, points.size());
   Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
-  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations))
+  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations, terms))
     run.removed[rank[swap.second]] = swap.first;
 }
 
@@ -156,13 +157,15 @@ Array<Index> finish(const Engine& engine, const Indexed_points& points, const En
 // removed points in removal order, or nothing when the callback stopped the
 // initialisation, or any part of a run through the kept points. The paper's
 // removals are exactly progressive, so its run through the kept points is
-// one run down to its last k + 1 points.
+// one run down to its last k + 1 points. The default mode runs with the
+// `terms` switched on.
 template <typename ConcurrencyTag, typename NormalWriter>
 std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& points, unsigned int k,
                                                             std::size_t target, Run_extent extent,
                                                             const Options& options,
                                                             const std::function<bool(double)>& callback,
-                                                            bool with_normals, const NormalWriter& write_normal)
+                                                            bool with_normals, const NormalWriter& write_normal,
+                                                            const Default_mode_terms& terms)
 {
   // the paper's plane is fitted in input order; then the points in input
   // order are done with, and their memory goes back before the run
@@ -179,12 +182,12 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
       return std::nullopt;
     return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
   }
-  Weighted_elimination engine(indexed, k, options);
+  Weighted_elimination engine(indexed, k, options, terms);
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
-  if (run.completed && !run.removed.empty())
-    relocate<ConcurrencyTag>(indexed, run);
+  if (terms.relocation && run.completed && !run.removed.empty())
+    relocate<ConcurrencyTag>(indexed, run, terms);
   if (through && !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, callback)))
     return std::nullopt;
   return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
@@ -199,12 +202,15 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
 // every distinct point is kept; a kept copy gets the normal of its
 // representative. The distinct points' coordinates are released once
 // sorted, their input positions during the run. `write_normal(position,
-// normal)` receives the normal of each kept point when `with_normals`.
+// normal)` receives the normal of each kept point when `with_normals`. The
+// default mode runs with the `terms` switched on, all of them unless the
+// benchmark's ablation asks otherwise.
 template <typename ConcurrencyTag, typename NormalWriter>
 std::optional<Array<Index> > simplify_points(Distinct_points&& distinct, unsigned int k, std::size_t target,
                                                    Run_extent extent, const Options& options,
                                                    const std::function<bool(double)>& callback,
-                                                   bool with_normals, const NormalWriter& write_normal)
+                                                   bool with_normals, const NormalWriter& write_normal,
+                                                   const Default_mode_terms& terms = Default_mode_terms())
 {
   const std::size_t distinct_count = distinct.size();
   const bool through = extent == Run_extent::through_the_kept;
@@ -221,7 +227,7 @@ std::optional<Array<Index> > simplify_points(Distinct_points&& distinct, unsigne
   Array<std::pair<Index, Working_vector> > normal_of_slot;
   const std::optional<Array<Index> > removed_distinct = simplify_distinct_points<ConcurrencyTag>(
     std::move(distinct.points), k, (std::min)(target, distinct_count), extent, options, callback, with_normals,
-    [&](Index slot, const Working_vector& normal) { normal_of_slot.emplace_back(slot, normal); });
+    [&](Index slot, const Working_vector& normal) { normal_of_slot.emplace_back(slot, normal); }, terms);
   if (!removed_distinct)
     return std::nullopt;
   const Array<Index> input_position = positions_of_no_copy(distinct.copies, distinct_count);
@@ -238,6 +244,20 @@ std::optional<Array<Index> > simplify_points(Distinct_points&& distinct, unsigne
       write_normal(distinct.copies[c], normal_of_representative[distinct.representative[c]]);
   }
   return removed;
+}
+
+// The removal order of the default mode on `points` (in input order) down
+// to `target`, with the `terms` switched on only: the input positions of
+// the removed points, first removed first. What the benchmark's ablation
+// measures, and its tests check against the reference.
+template <typename ConcurrencyTag>
+Array<Index> removal_order_with_terms(Array<Working_point> points, unsigned int k, std::size_t target,
+                                      const Options& options, const Default_mode_terms& terms)
+{
+  return simplify_points<ConcurrencyTag>(collapse_duplicates<ConcurrencyTag>(std::move(points)), k, target,
+                                         Run_extent::to_target, options, std::function<bool(double)>(), false,
+                                         [](Index, const Working_vector&) {}, terms)
+    .value_or(Array<Index>());
 }
 
 } // namespace internal

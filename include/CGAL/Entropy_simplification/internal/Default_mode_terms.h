@@ -1,0 +1,75 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The terms the default mode adds to weighted sample elimination, each of
+// which can be switched off to measure what it contributes.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_TERMS_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_TERMS_H
+
+#include <vector>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// What the default mode adds to Yuksel's weighted sample elimination (2015),
+// besides the entropy term itself (Options::feature_weight, 0 to switch it
+// off). Every public function runs with all of them; the benchmark's ablation
+// (benchmark/bench_ablation.cpp) switches each off in turn, and the tests
+// check each switch against the independent reference.
+struct Default_mode_terms
+{
+  // the feature strength is the greater of the fine and the coarse scale's
+  // (see coarse_feature_strength), rather than the fine scale's alone
+  bool coarse_scale = true;
+  // the feature weight is lowered where features cover much of the area
+  // (see budgeted_feature_weight)
+  bool feature_budget = true;
+  // the interaction radius follows the input's density (see density_scale)
+  bool density = true;
+  // the stages halve the count (see next_stage), rather than one stage going
+  // straight to the target
+  bool halving_stages = true;
+  // the kept points are relocated in Lloyd's manner (see relocate_within_input)
+  bool relocation = true;
+  // the relocation's cells keep their medians (see cell_median), rather than
+  // their members nearest the centroids
+  bool medians = true;
+  // no median moves a cell's radius beyond the greatest of the members
+  // nearest the centroids (see greatest_squared_radius_about_centroids)
+  bool radius_bound = true;
+};
+
+// The terms with one of them switched off, and the name of that term.
+struct Term_switched_off
+{
+  const char* term;
+  Default_mode_terms terms;
+};
+
+// Each term switched off in turn, in the order of Default_mode_terms: what
+// the ablation runs.
+inline std::vector<Term_switched_off> each_term_switched_off()
+{
+  std::vector<Term_switched_off> each;
+  const auto off = [&each](const char* term, bool Default_mode_terms::*which) {
+    Default_mode_terms terms;
+    terms.*which = false;
+    each.push_back({ term, terms });
+  };
+  off("coarse scale of the feature strength", &Default_mode_terms::coarse_scale);
+  off("feature budget", &Default_mode_terms::feature_budget);
+  off("density term", &Default_mode_terms::density);
+  off("halving stages (one stage)", &Default_mode_terms::halving_stages);
+  off("relocation", &Default_mode_terms::relocation);
+  off("medians (members nearest the centroids)", &Default_mode_terms::medians);
+  off("radius bound of the medians", &Default_mode_terms::radius_bound);
+  return each;
+}
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_TERMS_H
