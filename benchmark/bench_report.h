@@ -151,10 +151,14 @@ inline std::string family_of(const Report& r, const std::string& method)
 
 // The simplifiers of other libraries a user would pick instead of the
 // package: CGAL's, and PCL's and Open3D's where they were built.
+inline bool is_library_family(const std::string& family)
+{
+  return family == "CGAL" || family == "PCL" || family == "Open3D";
+}
+
 inline bool is_library_peer(const Report& r, const std::string& method)
 {
-  const std::string family = family_of(r, method);
-  return family == "CGAL" || family == "PCL" || family == "Open3D";
+  return is_library_family(family_of(r, method));
 }
 
 inline std::vector<std::string> library_peers(const Report& r)

@@ -251,7 +251,15 @@ namespace {
 // The reference's terms, as the library's.
 reference::Terms reference_terms(const ESI::Default_mode_terms& t)
 {
-  return { t.coarse_scale, t.feature_budget, t.density, t.halving_stages, t.relocation, t.medians, t.radius_bound };
+  reference::Terms r;
+  r.coarse_scale = t.coarse_scale;
+  r.feature_budget = t.feature_budget;
+  r.density = t.density;
+  r.halving_stages = t.halving_stages;
+  r.relocation = t.relocation;
+  r.medians = t.medians;
+  r.radius_bound = t.radius_bound;
+  return r;
 }
 
 std::vector<std::size_t> as_positions(const ESI::Array<ESI::Index>& removed)

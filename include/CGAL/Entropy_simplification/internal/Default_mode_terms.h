@@ -29,9 +29,11 @@ struct Default_mode_terms
   // the interaction radius follows the input's density (see density_scale)
   bool density = true;
   // the stages halve the count (see next_stage), rather than one stage going
-  // straight to the target
+  // straight to the target; the stages of a ranking through the kept points
+  // end at the level boundaries either way
   bool halving_stages = true;
-  // the kept points are relocated in Lloyd's manner (see relocate_within_input)
+  // the kept points are relocated in Lloyd's manner (see relocate_within_input);
+  // a ranking's level boundaries are relocated either way (see Level_cells)
   bool relocation = true;
   // the relocation's cells keep their medians (see cell_median), rather than
   // their members nearest the centroids

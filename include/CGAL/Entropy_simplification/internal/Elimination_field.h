@@ -284,7 +284,8 @@ Array<double> feature_strength_of_all(const Indexed_points& points, unsigned int
                                              [&](double f) { return progress(0.4 + 0.3 * f); }))
     return {};
   Array<Index>().swap(knn);
-  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, true, strength,
+  if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy,
+                                         Default_mode_terms().coarse_scale, strength,
                                          [&](double f) { return progress(0.7 + 0.3 * f); }))
     return {};
   return strength;

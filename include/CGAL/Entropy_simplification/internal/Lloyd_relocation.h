@@ -201,7 +201,8 @@ template <typename ConcurrencyTag>
 Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cells, const Default_mode_terms& terms)
 {
   const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
-  const double squared_bound = terms.radius_bound
+  // the member nearest the centroid needs no bound
+  const double squared_bound = terms.medians && terms.radius_bound
                                  ? greatest_squared_radius_about_centroids<ConcurrencyTag>(points, cell)
                                  : std::numeric_limits<double>::infinity();
   Array<Index> chosen(cells.sites.size());
@@ -210,6 +211,7 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
     [&](std::size_t c) {
       const Index* first = cell.members.data() + cell.first[c];
       const Index* beyond = cell.members.data() + cell.first[c + 1];
+      // the median of one candidate is the member nearest the centroid
       chosen[c] = terms.medians ? cell_median<candidates_per_cell>(points, first, beyond, squared_bound)
                                 : cell_median<1>(points, first, beyond, squared_bound);
     },
