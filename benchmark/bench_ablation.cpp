@@ -229,9 +229,59 @@ double geometric_ratio(const std::vector<Cell>& cells, std::size_t variant, Inpu
   return count > 0 ? std::exp(log_sum / count) : 0.;
 }
 
+// The measures of the ratios, in the order of the tables and the chart.
+using Metric = double (*)(const bench::Quality&);
+const Metric metrics[3] = { [](const bench::Quality& q) { return q.mean; },
+                            [](const bench::Quality& q) { return q.point_to_plane; },
+                            [](const bench::Quality& q) { return q.max; } };
+const char* const metric_names[3] = { "mean distance", "point-to-plane error", "Hausdorff distance" };
+
 int cells_in_group(const std::vector<Cell>& cells, Input_role role)
 {
   return int(std::count_if(cells.begin(), cells.end(), [&](const Cell& c) { return c.variant == 0 && c.role == role; }));
+}
+
+// The chart of the ratios (chart_ablation.png, which run.sh draws with
+// gnuplot): per measure, each term's change without it, group by group.
+void write_chart(const std::vector<Cell>& cells, const std::vector<Variant>& v, const std::string& dir)
+{
+  std::ofstream data(dir + "/ablation.dat");
+  data << "# term, then (ratio - 1) in % for each measure: tuned, held out, held out anew\n";
+  for (std::size_t i = 1; i < v.size(); ++i)
+  {
+    data << '"' << v[i].term << '"';
+    for (Metric metric : metrics)
+      for (int role = 0; role < 3; ++role)
+      {
+        const double ratio = geometric_ratio(cells, i, Input_role(role), metric);
+        data << ' ' << (ratio > 0. ? bench::fixed(100. * (ratio - 1.), 2) : std::string("NaN"));
+      }
+    data << '\n';
+  }
+  std::ofstream gp(dir + "/ablation.gp");
+  gp << "set terminal pngcairo noenhanced size 1500,640 font 'sans,10'\nset output 'chart_ablation.png'\n"
+        "set multiplot layout 1,3 title 'the default mode with one term switched off: the change against the "
+        "whole mode, geometric mean over the cells (above 0: the term helps)'\n"
+        "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
+        "set grid ytics\nset xtics rotate by -40 scale 0 font 'sans,9'\nset bmargin 15\nset key outside bottom center horizontal\n"
+        "set ylabel 'without the term / with it - 1 (%)'\n";
+  // a group without cells (the smoke run's held-out scans) has no bars
+  for (int m = 0; m < 3; ++m)
+  {
+    gp << "set title '" << metric_names[m] << "'\nplot ";
+    bool first = true;
+    for (int role = 0; role < 3; ++role)
+      if (cells_in_group(cells, Input_role(role)) > 0)
+      {
+        gp << (first ? "'ablation.dat'" : ", ''") << " using " << 2 + 3 * m + role << (first ? ":xtic(1)" : "")
+           << " title '" << role_names[role] << "'";
+        first = false;
+      }
+    gp << "\n";
+  }
+  gp << "unset multiplot\n";
+  if (!data || !gp)
+    throw std::runtime_error("cannot write the chart's files in " + dir);
 }
 
 void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v,
@@ -248,11 +298,9 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
         "program checks, in every cell, the count and that the kept points are distinct input points; with every "
         "term, it keeps what `entropy_simplify_point_set` keeps. Below 1 is better than the whole mode.\n\n"
      << "### Ratios to the whole mode\n\nGeometric mean over the cells of each group (tuned / held out / held out "
-        "anew) of the run without the term over the whole mode.\n\n"
+        "anew) of the run without the term over the whole mode, drawn in `results/chart_ablation.png`.\n\n"
+        "![ablation](results/chart_ablation.png)\n\n"
      << "| term switched off | mean distance | point-to-plane error | Hausdorff distance |\n|---|---|---|---|\n";
-  double (*const metrics[3])(const bench::Quality&) = { [](const bench::Quality& q) { return q.mean; },
-                                                        [](const bench::Quality& q) { return q.point_to_plane; },
-                                                        [](const bench::Quality& q) { return q.max; } };
   for (std::size_t i = 1; i < v.size(); ++i)
   {
     md << "| " << v[i].term << " |";
@@ -409,6 +457,7 @@ int main(int argc, char** argv)
       }
     }
     write_section(cells, v, peers, smoke);
+    write_chart(cells, v, out);
   }
   catch (const std::exception& e)
   {
