@@ -71,38 +71,14 @@ std::vector<Variant> variants()
   return v;
 }
 
-struct Input
-{
-  Input_role role;
-  std::function<Cloud()> make;
-};
-
 // The inputs of run_benchmark's issue-12 section, in its order and roles;
 // with `smoke`, its samples of meshes only, divided in size by 16.
-std::vector<Input> inputs(const std::string& data, bool smoke)
+std::vector<bench::Benchmark_input> inputs(const std::string& data, bool smoke)
 {
-  const std::size_t scale = smoke ? 16 : 1;
-  std::vector<Input> in;
-  for (double noise : { 0.002, 0.0012 })
-    in.push_back({ Input_role::tuned, [=] { return bench::replica(noise, scale); } });
-  in.push_back({ Input_role::tuned, [=] { return bench::mesh_sample("lion", data + "/meshes/lion.off", 457124 / scale, false); } });
-  in.push_back({ Input_role::tuned, [=] { return bench::mesh_sample("fandisk", data + "/meshes/fandisk.off", 200000 / scale, true); } });
-  const auto scan = [&](const std::string& file) {
-    return [=] { return bench::scan(file.substr(0, file.find('.')), data + "/points_3/" + file); };
-  };
-  if (!smoke)
-    in.push_back({ Input_role::tuned, scan("b9_training.ply") });
-  for (const char* file : { "hippo1.ply", "oni.pwn", "radar.xyz" })
-    if (!smoke)
-      in.push_back({ Input_role::held_out, scan(file) });
-  for (const std::string name : { "anchor", "rotor", "couplingdown" })
-    in.push_back({ Input_role::held_out_anew,
-                   [=] { return bench::mesh_sample(name, data + "/meshes/" + name + ".off", 100000 / scale, true); } });
-  in.push_back({ Input_role::held_out_anew,
-                 [=] { return bench::mesh_sample("armadillo", data + "/meshes/armadillo.off", 100000 / scale, false); } });
-  for (const char* file : { "building.ply", "kitten.xyz" })
-    if (!smoke)
-      in.push_back({ Input_role::held_out_anew, scan(file) });
+  std::vector<bench::Benchmark_input> in = bench::benchmark_inputs(data, smoke ? 16 : 1);
+  if (smoke)
+    in.erase(std::remove_if(in.begin(), in.end(), [](const bench::Benchmark_input& i) { return i.is_scan; }),
+             in.end());
   return in;
 }
 
@@ -417,7 +393,7 @@ int main(int argc, char** argv)
       throw std::runtime_error("cannot write " + out + "/ablation.csv");
     csv << "input,role,percent,term_off,count,mean,point_to_plane,max,share\n";
     csv.precision(10);
-    for (const Input& input : inputs(data, smoke))
+    for (const bench::Benchmark_input& input : inputs(data, smoke))
     {
       const Cloud cloud = input.make();
       const double labelled_share =

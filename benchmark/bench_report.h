@@ -7,6 +7,7 @@
 #ifndef ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
 #define ENTROPY_SIMPLIFICATION_BENCH_REPORT_H
 
+#include "bench_inputs.h"
 #include "bench_machine.h"
 #include "bench_metrics.h"
 #include "bench_methods.h"
@@ -45,20 +46,6 @@ struct Timing_row
   int runs = 0;
   bool skipped = false;
 };
-
-// How an input relates to the tuning of the default mode.
-enum class Input_role
-{
-  tuned,         // its results guided the mode's design and constants
-  held_out,      // set aside before the mode was first tuned, never used for it
-  held_out_anew, // named before the work on anisotropy (issue 12) began, never used for it
-};
-
-// What the tables append to an input's name.
-inline const char* role_mark(Input_role role)
-{
-  return role == Input_role::held_out ? " (held out)" : role == Input_role::held_out_anew ? " (held out anew)" : "";
-}
 
 struct Input_summary
 {

@@ -294,40 +294,25 @@ int main(int argc, char** argv)
     return r;
   };
 
+  // The quality tables' inputs, each with its ratios, those timed, and the
+  // paper's experiment it draws pictures for; the quick run keeps one replica.
   std::vector<Input_plan> plans;
-  for (double noise : quick ? std::vector<double>{ 0.0012 } : std::vector<double>{ 0.002, 0.0012 })
-    plans.push_back({ [=] { return replica(noise, scale); }, with({ 10. }), { 10. }, true, "replica", 10. });
-  plans.push_back({ [&] { return mesh_sample("lion", data + "/meshes/lion.off", 457124 / scale, false); },
-                    with(quick ? std::vector<double>{} : std::vector<double>{ 20., 40., 60., 80. }),
-                    { 10., 20. }, true, "lion", 20. });
-  plans.push_back({ [&] { return mesh_sample("fandisk", data + "/meshes/fandisk.off", 200000 / scale, true); },
-                    everywhere, { 10. }, true });
-  plans.push_back({ [&] { return scan("b9_training", data + "/points_3/b9_training.ply"); }, everywhere, { 10. }, true });
-  // the feature weight sweep runs on every tuned input (three of them labelled)
-  for (Input_plan& plan : plans)
-    plan.feature_sweep = true;
-  // Held out: set aside before the default mode was tuned, never used for it.
-  for (const std::string name : { "hippo1.ply", "oni.pwn", "radar.xyz" })
+  for (const Benchmark_input& input : benchmark_inputs(data, scale))
   {
-    Input_plan plan{ [=] { return scan(name.substr(0, name.find('.')), data + "/points_3/" + name); }, everywhere, {},
-                     true };
-    plan.role = Input_role::held_out;
-    plans.push_back(plan);
-  }
-  // Held out anew, named before the work on anisotropy (issue 12) began: three
-  // machined parts whose sharp edges are labelled, a smooth animal, and two
-  // scans. Not timed.
-  std::vector<std::function<Cloud()> > anew;
-  for (const std::string name : { "anchor", "rotor", "couplingdown" })
-    anew.push_back([=] { return mesh_sample(name, data + "/meshes/" + name + ".off", 100000 / scale, true); });
-  anew.push_back([=] { return mesh_sample("armadillo", data + "/meshes/armadillo.off", 100000 / scale, false); });
-  for (const std::string name : { "building.ply", "kitten.xyz" })
-    anew.push_back([=] { return scan(name.substr(0, name.find('.')), data + "/points_3/" + name); });
-  for (std::size_t i = 0; i < anew.size(); ++i)
-  {
-    Input_plan plan{ anew[i], everywhere, {}, true };
-    plan.role = Input_role::held_out_anew;
-    plan.feature_sweep = i < 3; // the first three: the labelled machined parts
+    if (quick && input.name == "replica_2mm")
+      continue;
+    Input_plan plan{ input.make, everywhere, {}, true };
+    if (input.name == "replica_2mm" || input.name == "replica_1.2mm")
+      plan = { input.make, with({ 10. }), { 10. }, true, "replica", 10. };
+    else if (input.name == "lion")
+      plan = { input.make, with(quick ? std::vector<double>{} : std::vector<double>{ 20., 40., 60., 80. }),
+               { 10., 20. }, true, "lion", 20. };
+    else if (input.role == Input_role::tuned)
+      plan.timed_ratios = { 10. };
+    plan.role = input.role;
+    // the feature weight sweep runs on every tuned input and on the
+    // labelled machined parts held out anew
+    plan.feature_sweep = input.role == Input_role::tuned || (input.role == Input_role::held_out_anew && input.labelled);
     plans.push_back(plan);
   }
   plans.push_back({ [&] { return mesh_sample("timing_1M", data + "/meshes/lion.off", 1000000 / scale, false); },

@@ -143,10 +143,9 @@ inline void cap_isolated_areas(Array<double>& area)
 
 // The factor of each point's interaction radius: the feature term, whose
 // weight the budget may lower, times the density term (either switched off
-// by `terms`). Also sets the
-// effective area, the sampled area weighted by the density each scale asks
-// for (1 / scale^2), summed in input order so that it does not depend on the
-// internal order.
+// by `terms`). Also sets the effective area, the sampled area weighted by
+// the density each scale asks for (1 / scale^2), summed in input order so
+// that it does not depend on the internal order.
 template <typename ConcurrencyTag>
 void set_scales(const Indexed_points& points, const Array<double>& area, const Array<double>& strength,
                 double feature_weight, const Default_mode_terms& terms, Elimination_field& field)
