@@ -202,21 +202,21 @@ TEST_CASE("Feature field: the coarse stride and the stages of the elimination", 
     CHECK(last.radius == Approx(2.2360679775).epsilon(1e-10));
     CHECK(last.limit == Approx(0.6622893801).epsilon(1e-9));
   }
-  SECTION("the weight of a pair: (1 - d / 2 r s)^8 in units of 2^-40")
+  SECTION("the weight of a pair: (1 - d / 2 r s)^2 in units of 2^-40")
   {
     const ESI::Elimination_stage stage{ 100, 1., 0.4 };
     const Point a(0, 0, 0);
-    // reach 2: d = 1 gives (1/2)^8 = 2^-8, that is 2^32 units
-    CHECK(ESI::pair_weight(a, Point(1, 0, 0), 1., 1., stage) == 4294967296);
-    // d = 0.3 counts as the limit 0.4: (1 - 0.2)^8 = 0.16777216, times 2^40 =
-    // 2^64 / 10^8 = 184467440737.09551616
-    CHECK(ESI::pair_weight(a, Point(0.3, 0, 0), 1., 1., stage) == 184467440737);
+    // reach 2: d = 1 gives (1/2)^2 = 2^-2, that is 2^38 units
+    CHECK(ESI::pair_weight(a, Point(1, 0, 0), 1., 1., stage) == 274877906944);
+    // d = 0.3 counts as the limit 0.4: (1 - 0.2)^2 = 0.64, times 2^40 =
+    // 703687441776.64
+    CHECK(ESI::pair_weight(a, Point(0.3, 0, 0), 1., 1., stage) == 703687441777);
     // at and beyond the reach: nothing
     CHECK(ESI::pair_weight(a, Point(2, 0, 0), 1., 1., stage) == 0);
     CHECK(ESI::pair_weight(a, Point(0, 3, 4), 1., 1., stage) == 0);
-    // scales 1 and 0.5: s = 0.75, reach 1.5, d = 0.75 gives (1/2)^8 again, either way round
-    CHECK(ESI::pair_weight(a, Point(0, 0.75, 0), 1., 0.5, stage) == 4294967296);
-    CHECK(ESI::pair_weight(Point(0, 0.75, 0), a, 0.5, 1., stage) == 4294967296);
+    // scales 1 and 0.5: s = 0.75, reach 1.5, d = 0.75 gives (1/2)^2 again, either way round
+    CHECK(ESI::pair_weight(a, Point(0, 0.75, 0), 1., 0.5, stage) == 274877906944);
+    CHECK(ESI::pair_weight(Point(0, 0.75, 0), a, 0.5, 1., stage) == 274877906944);
   }
 }
 

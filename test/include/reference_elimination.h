@@ -402,7 +402,11 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
   const double typical_area = median(area);
   for (std::size_t p = 0; p < n; ++p)
   {
-    field.scale.push_back(radius_factor(strength[p], field.weight, area[p], typical_area, terms.density));
+    // rounded to 30 significant bits, as the manual says
+    int exponent = 0;
+    const double significand =
+      std::frexp(radius_factor(strength[p], field.weight, area[p], typical_area, terms.density), &exponent);
+    field.scale.push_back(std::ldexp(std::round(significand * 1073741824.), exponent - 30));
     field.effective_area += area[p] / (field.scale[p] * field.scale[p]);
   }
   return field;
@@ -435,7 +439,7 @@ inline Stage stage_from(std::size_t present, std::size_t target, double effectiv
   return stage_to(present, (std::max)(target, (present + 1) / 2), effective_area);
 }
 
-// (1 - d / 2r s)^8 within 2 r s, s the mean of the two scales, d not below
+// (1 - d / 2r s)^2 within 2 r s, s the mean of the two scales, d not below
 // the limit times s; in units of 2^-40, so that sums are exact in any order.
 inline std::int64_t pair_weight(const Point& a, const Point& b, double scale_a, double scale_b, const Stage& stage)
 {
@@ -444,7 +448,8 @@ inline std::int64_t pair_weight(const Point& a, const Point& b, double scale_a, 
   if (d >= reach)
     return 0;
   const double floor = stage.limit * (scale_a + scale_b) / 2.;
-  return std::llround(std::pow(1. - (std::max)(d, floor) / reach, 8) * std::ldexp(1., 40));
+  const double w = 1. - (std::max)(d, floor) / reach;
+  return std::llround(w * w * std::ldexp(1., 40));
 }
 
 // The weight of every pair of distinct points in a stage, row by row: the
@@ -668,35 +673,24 @@ inline std::size_t stage_end(std::size_t present, std::size_t n)
 }
 
 // The cells of the points, each in that of its nearest present point: a
-// label per point (equal labels, one cell), and the sums of each label's
-// points (x, y, z, count), in input order.
-struct Cells
+// label per point (equal labels, one cell).
+inline std::vector<std::size_t> cells_of_present(const std::vector<Point>& points, const std::vector<bool>& present)
 {
-  std::vector<std::size_t> label;
-  std::vector<std::array<double, 4> > sum;
-};
-
-inline Cells cells_of_present(const std::vector<Point>& points, const std::vector<bool>& present)
-{
-  Cells cells{ std::vector<std::size_t>(points.size()),
-               std::vector<std::array<double, 4> >(points.size(), { 0., 0., 0., 0. }) };
+  std::vector<std::size_t> label(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
-  {
-    const std::size_t l = cells.label[p] = nearest_present(points, present, p);
-    cells.sum[l] = { cells.sum[l][0] + points[p].x(), cells.sum[l][1] + points[p].y(),
-                     cells.sum[l][2] + points[p].z(), cells.sum[l][3] + 1. };
-  }
-  return cells;
+    label[p] = nearest_present(points, present, p);
+  return label;
 }
 
 // At a boundary: each point the stage removed (in removal order) brings its
 // cell into that of the present point nearest it among those of nonzero
-// weight, if any, the sums of its cell added to those of the other; then
-// each cell with a present point keeps, among that point and the stage's
-// removed points of the cell, the one nearest the cell's centroid, which
-// takes the other's place in `stage_removed`.
+// weight, if any; then each cell with a present point keeps, among that
+// point and the stage's removed points of the cell, the one whose distances
+// to the cell's points, summed in input order, sum least (ties: the lowest
+// position), which takes the other's place in `stage_removed`.
 inline void relocate_boundary(const std::vector<Point>& points, const std::vector<std::int64_t>& weights,
-                              std::vector<bool>& present, Cells& cells, std::vector<std::size_t>& stage_removed)
+                              std::vector<bool>& present, std::vector<std::size_t>& label,
+                              std::vector<std::size_t>& stage_removed)
 {
   const std::size_t n = points.size();
   for (std::size_t r : stage_removed)
@@ -707,24 +701,27 @@ inline void relocate_boundary(const std::vector<Point>& points, const std::vecto
         nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
     if (nearest.second == n)
       continue;
-    const std::size_t from = cells.label[r], to = cells.label[nearest.second];
-    for (int c = 0; c < 4; ++c)
-      cells.sum[to][c] += cells.sum[from][c];
-    for (std::size_t& l : cells.label)
+    const std::size_t from = label[r], to = label[nearest.second];
+    for (std::size_t& l : label)
       if (l == from)
         l = to;
   }
+  const auto distance_sum = [&](std::size_t candidate, std::size_t cell) {
+    double sum = 0.;
+    for (std::size_t q = 0; q < n; ++q)
+      if (label[q] == cell)
+        sum += std::sqrt(squared_distance(points[q], points[candidate]));
+    return sum;
+  };
   const std::vector<bool> sites = present;
   for (std::size_t site = 0; site < n; ++site)
   {
     if (!sites[site])
       continue;
-    const std::array<double, 4>& sum = cells.sum[cells.label[site]];
-    const Point centroid(sum[0] / sum[3], sum[1] / sum[3], sum[2] / sum[3]);
-    Neighbor best{ squared_distance(points[site], centroid), site };
+    std::pair<double, std::size_t> best{ distance_sum(site, label[site]), site };
     for (std::size_t r : stage_removed)
-      if (cells.label[r] == cells.label[site])
-        best = (std::min)(best, Neighbor{ squared_distance(points[r], centroid), r });
+      if (label[r] == label[site])
+        best = (std::min)(best, std::make_pair(distance_sum(r, label[site]), r));
     if (best.second == site)
       continue;
     present[site] = false;
@@ -739,7 +736,7 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
                                                         std::vector<bool> present)
 {
   const std::size_t n = points.size();
-  Cells cells = cells_of_present(points, present);
+  std::vector<std::size_t> label = cells_of_present(points, present);
   std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
   std::vector<std::size_t> removed;
   while (count > 1)
@@ -754,7 +751,7 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
       stage_removed.push_back(p);
     }
     if (stage.target > 1)
-      relocate_boundary(points, weights, present, cells, stage_removed);
+      relocate_boundary(points, weights, present, label, stage_removed);
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
   }
   return removed;

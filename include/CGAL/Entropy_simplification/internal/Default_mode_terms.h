@@ -36,7 +36,8 @@ struct Default_mode_terms
   // a ranking's level boundaries are relocated either way (see Level_cells)
   bool relocation = true;
   // the relocation's cells keep their medians (see cell_median), rather than
-  // their members nearest the centroids
+  // their members nearest the centroids; a ranking's level boundaries take
+  // medians either way (see Level_cells)
   bool medians = true;
   // no median moves a cell's radius beyond the greatest of the members
   // nearest the centroids (see greatest_squared_radius_about_centroids)

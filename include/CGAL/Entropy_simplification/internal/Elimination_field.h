@@ -18,6 +18,7 @@
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -141,11 +142,25 @@ inline void cap_isolated_areas(Array<double>& area)
     a = (std::min)(a, largest);
 }
 
+// `x` with its significand rounded to 30 bits, a relative change below
+// 1e-9. The scales are rounded so because, computed by other means (the
+// tests' reference) or with other floating-point contractions, they differ
+// in their last bits: the integer weights built from them then round
+// differently, and a tie of weight sums, as on a regular grid, may break the
+// other way. Rounded, they agree unless one lies within those last bits of a
+// rounding boundary.
+inline double with_30_bit_significand(double x)
+{
+  int exponent = 0;
+  const double significand = std::frexp(x, &exponent);
+  return std::ldexp(std::round(std::ldexp(significand, 30)), exponent - 30);
+}
+
 // The factor of each point's interaction radius: the feature term, whose
 // weight the budget may lower, times the density term (either switched off
-// by `terms`). Also sets the effective area, the sampled area weighted by
-// the density each scale asks for (1 / scale^2), summed in input order so
-// that it does not depend on the internal order.
+// by `terms`), rounded to 30 bits. Also sets the effective area, the
+// sampled area weighted by the density each scale asks for (1 / scale^2),
+// summed in input order so that it does not depend on the internal order.
 template <typename ConcurrencyTag>
 void set_scales(const Indexed_points& points, const Array<double>& area, const Array<double>& strength,
                 double feature_weight, const Default_mode_terms& terms, Elimination_field& field)
@@ -166,8 +181,8 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
   for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
-      field.scale[i] =
-        interaction_scale(strength[i], weight) * (terms.density ? density_scale(area[i], typical_area) : 1.);
+      field.scale[i] = with_30_bit_significand(interaction_scale(strength[i], weight) *
+                                               (terms.density ? density_scale(area[i], typical_area) : 1.));
       weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
     },
     [](std::size_t) { return true; });

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The cells that relocate the levels of detail of a default-mode ranking:
-// the prefixes a ranking passes through are moved toward the centroids of
-// the input points they stand for, as a direct call's relocation moves its
+// the prefixes a ranking passes through are moved to the medians of the
+// input points they stand for, as a direct call's relocation moves its
 // result, without breaking their nesting.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LEVEL_CELLS_H
@@ -12,8 +12,9 @@
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -42,81 +43,131 @@ inline std::size_t level_boundary_below(std::size_t present, std::size_t n)
 // Each input point belongs to one cell, which has at most one present
 // point: at first, that of the present point nearest it. A point removed at
 // a level boundary's stage brings its cell into that of its nearest present
-// neighbour; each cell is then represented by the point, present or removed
-// in that stage, nearest its centroid. The points removed before the stage
-// stay removed, so that the levels above keep their points, and each level's
+// neighbour; each cell is then represented by its median among the point
+// present and those removed in that stage, as a direct call's relocation
+// takes its cells' medians. The points removed before the stage stay
+// removed, so that the levels above keep their points, and each level's
 // points stand for the input points nearest them, as a direct call's
 // relocated ones do.
 class Level_cells
 {
 public:
   // `site[i]` is the present point whose cell holds `i`: `i` itself when
-  // present. The sums of the cells start in input order, and a join adds
-  // one cell's sums to the other's: they follow the order of the joins,
-  // not the internal order, and no pass over every point is needed later.
-  Level_cells(const Indexed_points& points, const Array<Index>& by_input, Array<Index> site)
-    : m_parent(std::move(site)), m_sum(points.size(), Sum{ 0., 0., 0., 0. }), m_slot(points.size(), no_slot)
+  // present. `by_input` lists the points in input order, the order in which
+  // each candidate's distances are summed.
+  Level_cells(Array<Index> by_input, Array<Index> site)
+    : m_by_input(std::move(by_input)), m_parent(std::move(site)), m_slot(m_parent.size(), no_slot)
   {
-    for (Index i : by_input)
-      add(m_sum[m_parent[i]], Sum{ points.points[i].x(), points.points[i].y(), points.points[i].z(), 1. });
   }
 
   // Merges the cell of `removed` into that of `site`.
-  void join(Index removed, Index site)
-  {
-    const Index from = cell_of(removed), to = cell_of(site);
-    add(m_sum[to], m_sum[from]);
-    m_parent[from] = to;
-  }
+  void join(Index removed, Index site) { m_parent[cell_of(removed)] = cell_of(site); }
 
-  // Replaces each of the present `sites` by the member of its cell nearest
-  // the cell's centroid, among it and the `stage_removed` points (in
-  // removal order): a site that leaves takes the place, in `stage_removed`,
-  // of the point that replaces it. Returns the points that became present.
-  Array<Index> move_toward_centroids(const Indexed_points& points, const Array<Index>& sites,
-                                           Array<char>& present, Array<Index>& stage_removed)
+  // Replaces each of the present `sites` by the median of its cell among it
+  // and the `stage_removed` points of the cell: the candidate whose
+  // distances to the cell's points, summed in input order, sum least (ties:
+  // the lowest input position). A site that leaves takes the place, in
+  // `stage_removed`, of the point that replaces it. Returns the points that
+  // became present.
+  template <typename ConcurrencyTag>
+  Array<Index> move_to_medians(const Indexed_points& points, const Array<Index>& sites, Array<char>& present,
+                               Array<Index>& stage_removed)
   {
-    Array<Working_point> centroid;
-    Array<Neighbor> best;
-    centroid.reserve(sites.size());
-    best.reserve(sites.size());
-    for (Index s : sites)
-    {
-      const Index cell = cell_of(s);
-      const Sum& sum = m_sum[cell];
-      m_slot[cell] = Index(centroid.size());
-      centroid.emplace_back(sum[0] / sum[3], sum[1] / sum[3], sum[2] / sum[3]);
-      best.push_back(Neighbor{ squared_distance(points.points[s], centroid.back()), points.input_position[s], s });
-    }
-    for (Index r : stage_removed)
-      if (const Index slot = m_slot[cell_of(r)]; slot != no_slot)
-      {
-        const Neighbor candidate{ squared_distance(points.points[r], centroid[slot]), points.input_position[r], r };
-        if (candidate < best[slot])
-          best[slot] = candidate;
-      }
-    Array<Index> arrived;
-    for (Index& r : stage_removed)
-      if (const Index slot = m_slot[cell_of(r)]; slot != no_slot && best[slot].id == r)
-      {
-        present[sites[slot]] = 0;
-        present[r] = 1;
-        arrived.push_back(r);
-        r = sites[slot];
-      }
+    for (std::size_t c = 0; c < sites.size(); ++c)
+      m_slot[cell_of(sites[c])] = Index(c);
+    const Cell_lists candidates = candidates_by_cell(sites, stage_removed);
+    const Cell_lists members = members_by_cell(sites.size());
+    Array<Index> median(sites.size());
+    for_each_index<ConcurrencyTag>(
+      sites.size(),
+      [&](std::size_t c) {
+        median[c] = median_of(points, candidates.of(c), members.of(c));
+      },
+      [](std::size_t) { return true; });
     for (Index s : sites)
       m_slot[cell_of(s)] = no_slot;
+
+    Array<Index> arrived;
+    Array<Index> site_of_candidate(present.size(), no_slot);
+    for (std::size_t c = 0; c < sites.size(); ++c)
+      if (median[c] != sites[c])
+        site_of_candidate[median[c]] = Index(c);
+    for (Index& r : stage_removed)
+      if (const Index c = site_of_candidate[r]; c != no_slot)
+      {
+        present[sites[c]] = 0;
+        present[r] = 1;
+        arrived.push_back(r);
+        r = sites[c];
+      }
     return arrived;
   }
 
 private:
-  using Sum = std::array<double, 4>; // x, y, z and the number of points
   static constexpr Index no_slot = (std::numeric_limits<Index>::max)();
 
-  static void add(Sum& to, const Sum& from)
+  // Lists by cell: those of cell c at items[first[c], first[c + 1]).
+  struct Cell_lists
   {
-    for (int c = 0; c < 4; ++c)
-      to[c] += from[c];
+    Array<std::size_t> first;
+    Array<Index> items;
+    std::pair<const Index*, const Index*> of(std::size_t c) const
+    {
+      return { items.data() + first[c], items.data() + first[c + 1] };
+    }
+  };
+
+  // Counted into place: the slot of each item's cell, `slot(i)`, is known.
+  template <typename Items, typename SlotOf>
+  static Cell_lists lists_by_slot(std::size_t cells, const Items& items, const SlotOf& slot)
+  {
+    Cell_lists lists;
+    lists.first.assign(cells + 1, 0);
+    for (Index i : items)
+      if (const Index c = slot(i); c != no_slot)
+        ++lists.first[c + 1];
+    for (std::size_t c = 0; c < cells; ++c)
+      lists.first[c + 1] += lists.first[c];
+    lists.items.resize(lists.first.back());
+    Array<std::size_t> next(lists.first.begin(), lists.first.end() - 1);
+    for (Index i : items)
+      if (const Index c = slot(i); c != no_slot)
+        lists.items[next[c]++] = i;
+    return lists;
+  }
+
+  // Each cell's site, then its points removed in the stage.
+  Cell_lists candidates_by_cell(const Array<Index>& sites, const Array<Index>& stage_removed)
+  {
+    Array<Index> all(sites.begin(), sites.end());
+    all.insert(all.end(), stage_removed.begin(), stage_removed.end());
+    return lists_by_slot(sites.size(), all, [&](Index i) { return m_slot[cell_of(i)]; });
+  }
+
+  // Each cell's points in input order; those of cells without a present
+  // point are left out.
+  Cell_lists members_by_cell(std::size_t cells)
+  {
+    return lists_by_slot(cells, m_by_input, [&](Index i) { return m_slot[cell_of(i)]; });
+  }
+
+  static Index median_of(const Indexed_points& points, std::pair<const Index*, const Index*> candidates,
+                         std::pair<const Index*, const Index*> members)
+  {
+    Index best = *candidates.first;
+    double best_sum = std::numeric_limits<double>::infinity();
+    for (const Index* c = candidates.first; c != candidates.second; ++c)
+    {
+      double sum = 0.;
+      for (const Index* m = members.first; m != members.second; ++m)
+        sum += std::sqrt(squared_distance(points.points[*m], points.points[*c]));
+      if (sum < best_sum || (sum == best_sum && points.input_position[*c] < points.input_position[best]))
+      {
+        best = *c;
+        best_sum = sum;
+      }
+    }
+    return best;
   }
 
   // The root of the cell of `i`, halving the paths on the way.
@@ -127,8 +178,8 @@ private:
     return i;
   }
 
+  Array<Index> m_by_input;
   Array<Index> m_parent;
-  Array<Sum> m_sum;    // by cell root
   Array<Index> m_slot; // by cell root, the rank of its present point among the sites, while relocating
 };
 

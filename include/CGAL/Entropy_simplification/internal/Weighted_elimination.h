@@ -67,8 +67,13 @@ inline std::int64_t rounded(double x)
 }
 
 // The weight of a pair, in units of 2^-40 so that sums and differences of
-// weights are exact whatever their order: (1 - d / (2 r s))^8 within 2 r s,
+// weights are exact whatever their order: (1 - d / (2 r s))^2 within 2 r s,
 // s the mean of the two points' scales, d not below the limit times s.
+// Yuksel's exponent is 8, for blue noise. A square weighs the farther
+// neighbours more, which on the tuned inputs of the benchmark lowered the
+// Hausdorff distance by 3.3% and the point-to-plane error by 1.5% on
+// geometric average at 10, 20 and 50% kept, the mean distance unchanged
+// (exponents 1 to 12 measured; see the manual).
 inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, double scale_a, double scale_b,
                                 const Elimination_stage& stage)
 {
@@ -78,8 +83,7 @@ inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, 
   if (!(d < reach))
     return 0;
   const double w = 1. - (std::max)(d, stage.limit * s) / reach;
-  const double w2 = w * w, w4 = w2 * w2;
-  return rounded(w4 * w4 * 1099511627776.);
+  return rounded(w * w * 1099511627776.);
 }
 
 // The elimination on the present points. Each stage gathers, for each point,
@@ -143,7 +147,7 @@ public:
   // direct calls'. `site[i]` is the present point nearest `i`.
   void relocate_level_boundaries(Array<Index> site)
   {
-    m_level_cells.emplace(m_points, indices_by_input_position(m_points), std::move(site));
+    m_level_cells.emplace(indices_by_input_position(m_points), std::move(site));
   }
 
   // Removes points down to `target`, calling `removed(i)` after each removal;
@@ -509,8 +513,8 @@ private:
   }
 
   // At a level boundary: the points removed in the stage join the cells of
-  // their nearest present neighbours, and each cell's point moves toward
-  // its centroid.
+  // their nearest present neighbours, and each cell's point moves to its
+  // median.
   template <typename ConcurrencyTag>
   void relocate_level(Array<Index>& stage_removed)
   {
@@ -523,7 +527,7 @@ private:
         m_level_cells->join(stage_removed[r], *site[r]);
     list_present();
     const Array<Index> arrived =
-      m_level_cells->move_toward_centroids(m_points, m_listed, m_present, stage_removed);
+      m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, stage_removed);
     list_present();
     const std::size_t stayed = m_listed.size();
     m_listed.insert(m_listed.end(), arrived.begin(), arrived.end());
