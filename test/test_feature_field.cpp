@@ -177,6 +177,28 @@ TEST_CASE("Feature field: the interaction and density scales", "[feature field]"
   }
 }
 
+TEST_CASE("Feature field: the scales are rounded to 30 significant bits", "[feature field]")
+{
+  // 30 bits of significand, the leading one included: 2^-29 apart in [1, 2),
+  // 2^-30 apart in [0.5, 1); halves round away from zero
+  const double step = std::ldexp(1., -29);
+  CHECK(ESI::with_30_bit_significand(1.) == 1.);
+  CHECK(ESI::with_30_bit_significand(1. + step / 4) == 1.);
+  CHECK(ESI::with_30_bit_significand(1. + step / 2) == 1. + step);
+  CHECK(ESI::with_30_bit_significand(1. + 3 * step / 4) == 1. + step);
+  CHECK(ESI::with_30_bit_significand(2. - step / 4) == 2.);
+  CHECK(ESI::with_30_bit_significand(0.75 + step / 8) == 0.75);
+  CHECK(ESI::with_30_bit_significand(0.75 + 3 * step / 8) == 0.75 + step / 2);
+  CHECK(ESI::with_30_bit_significand(0.) == 0.);
+  // a value of 30 significant bits stays: 2^29 + 1 scaled
+  const double thirty_bits = (std::ldexp(1., 29) + 1.) / 1024.;
+  CHECK(ESI::with_30_bit_significand(thirty_bits) == thirty_bits);
+  // 1/3 = 0.0101...b: the nearest multiple of 2^-31 in [0.25, 0.5)
+  const double third = std::round(std::ldexp(1. / 3., 31)) / std::ldexp(1., 31);
+  CHECK(ESI::with_30_bit_significand(1. / 3.) == third);
+  CHECK(std::abs(third - 1. / 3.) <= std::ldexp(1., -32));
+}
+
 TEST_CASE("Feature field: the coarse stride and the stages of the elimination", "[feature field]")
 {
   // the manual's every 64th point: a spacing sqrt(64) = 8 times wider

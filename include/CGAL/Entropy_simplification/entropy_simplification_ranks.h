@@ -102,18 +102,19 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
      rounded up. At each boundary, each input point belongs to a cell
      with one present point: at first, the kept point nearest it; a point
      the stage removed brings its cell into that of its nearest present
-     neighbour. Each cell's point is then replaced by the point nearest
-     the cell's centroid among it and the points that stage removed, so
-     that the prefix stands for the input points nearest it, as a direct
-     call's relocation makes its result do, while the prefixes stay nested.
+     neighbour. Each cell's point is then replaced by the cell's median
+     among it and the cell's points that stage removed (the one whose
+     distances to the cell's input points sum least), so that the prefix
+     stands for the input points nearest it, as a direct call's relocation
+     makes its result do, while the prefixes stay nested.
 
    Without a level, every boundary is thus relocated: on the benchmark's
    inputs, a prefix's mean distance to the input is at most 1.05 times that
    of a direct call to its size from 10% to 50% of the points, up to 1.052
-   times at 5% and 1.09 times at 1% (the user manual gives the figures).
+   times at 5% and 1.078 times at 1% (the user manual gives the figures).
    With a level, the prefixes longer than `L` are not relocated, and are up
-   to 1.23 times worse. The whole order costs about one direct call to 1% of
-   the points (0.93 to 1.12 times, measured).
+   to 1.22 times worse. The whole order costs about one direct call to 1% of
+   the points (0.93 to 1.13 times, measured).
 
    Coincident points are ranked last: their first copy in input order takes
    part in the run, and the other copies take the last ranks, the earliest

@@ -10,13 +10,15 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LEVEL_CELLS_H
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Cell_medians.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
-#include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
-#include <cmath>
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <utility>
 
 namespace CGAL {
@@ -56,7 +58,7 @@ public:
   // present. `by_input` lists the points in input order, the order in which
   // each candidate's distances are summed.
   Level_cells(Array<Index> by_input, Array<Index> site)
-    : m_by_input(std::move(by_input)), m_parent(std::move(site)), m_slot(m_parent.size(), no_slot)
+    : m_by_input(std::move(by_input)), m_parent(std::move(site))
   {
   }
 
@@ -73,27 +75,15 @@ public:
   Array<Index> move_to_medians(const Indexed_points& points, const Array<Index>& sites, Array<char>& present,
                                Array<Index>& stage_removed)
   {
-    for (std::size_t c = 0; c < sites.size(); ++c)
-      m_slot[cell_of(sites[c])] = Index(c);
-    const Cell_lists candidates = candidates_by_cell(sites, stage_removed);
-    const Cell_lists members = members_by_cell(sites.size());
-    Array<Index> median(sites.size());
-    for_each_index<ConcurrencyTag>(
-      sites.size(),
-      [&](std::size_t c) {
-        median[c] = median_of(points, candidates.of(c), members.of(c));
-      },
-      [](std::size_t) { return true; });
-    for (Index s : sites)
-      m_slot[cell_of(s)] = no_slot;
-
+    const Array<Index> cell = site_rank_of_each_point<ConcurrencyTag>(sites);
+    const auto cell_of_point = [&](Index i) { return cell[i]; };
+    Array<Index> candidates(sites.begin(), sites.end());
+    candidates.insert(candidates.end(), stage_removed.begin(), stage_removed.end());
+    const Array<Index> median = medians<ConcurrencyTag>(points, group_by_cell(sites.size(), candidates, cell_of_point),
+                                                        group_by_cell(sites.size(), m_by_input, cell_of_point));
     Array<Index> arrived;
-    Array<Index> site_of_candidate(present.size(), no_slot);
-    for (std::size_t c = 0; c < sites.size(); ++c)
-      if (median[c] != sites[c])
-        site_of_candidate[median[c]] = Index(c);
     for (Index& r : stage_removed)
-      if (const Index c = site_of_candidate[r]; c != no_slot)
+      if (const Index c = cell[r]; c != no_cell && median[c] == r)
       {
         present[sites[c]] = 0;
         present[r] = 1;
@@ -104,70 +94,65 @@ public:
   }
 
 private:
-  static constexpr Index no_slot = (std::numeric_limits<Index>::max)();
-
-  // Lists by cell: those of cell c at items[first[c], first[c + 1]).
-  struct Cell_lists
+  // For each point, the rank among the `sites` of its cell's site, or
+  // `no_cell` if its cell has none. The paths are replaced by their roots,
+  // found in parallel by walking them without writing.
+  template <typename ConcurrencyTag>
+  Array<Index> site_rank_of_each_point(const Array<Index>& sites)
   {
-    Array<std::size_t> first;
-    Array<Index> items;
-    std::pair<const Index*, const Index*> of(std::size_t c) const
-    {
-      return { items.data() + first[c], items.data() + first[c + 1] };
-    }
-  };
+    Array<Index> root(m_parent.size());
+    for_each_index<ConcurrencyTag>(
+      root.size(),
+      [&](std::size_t i) {
+        Index r = Index(i);
+        while (m_parent[r] != r)
+          r = m_parent[r];
+        root[i] = r;
+      },
+      [](std::size_t) { return true; });
+    m_parent.swap(root);
+    Array<Index>& rank_of_root = root; // the old parents are no longer needed
+    std::fill(rank_of_root.begin(), rank_of_root.end(), no_cell);
+    for (std::size_t c = 0; c < sites.size(); ++c)
+      rank_of_root[m_parent[sites[c]]] = Index(c);
+    Array<Index> rank(m_parent.size());
+    for_each_index<ConcurrencyTag>(
+      rank.size(), [&](std::size_t i) { rank[i] = rank_of_root[m_parent[i]]; }, [](std::size_t) { return true; });
+    return rank;
+  }
 
-  // Counted into place: the slot of each item's cell, `slot(i)`, is known.
-  template <typename Items, typename SlotOf>
-  static Cell_lists lists_by_slot(std::size_t cells, const Items& items, const SlotOf& slot)
+  // Each cell's median: its candidate of least distance sum to its members
+  // (ties by input position), the first candidate, the site, being one. The
+  // candidates' sums are computed in parallel rather than the cells':
+  // at the coarsest levels, a few cells hold every point.
+  template <typename ConcurrencyTag>
+  static Array<Index> medians(const Indexed_points& points, const Cell_members& candidates,
+                              const Cell_members& members)
   {
-    Cell_lists lists;
-    lists.first.assign(cells + 1, 0);
-    for (Index i : items)
-      if (const Index c = slot(i); c != no_slot)
-        ++lists.first[c + 1];
+    const std::size_t cells = candidates.first.size() - 1;
+    Array<Index> cell_of_candidate(candidates.members.size());
     for (std::size_t c = 0; c < cells; ++c)
-      lists.first[c + 1] += lists.first[c];
-    lists.items.resize(lists.first.back());
-    Array<std::size_t> next(lists.first.begin(), lists.first.end() - 1);
-    for (Index i : items)
-      if (const Index c = slot(i); c != no_slot)
-        lists.items[next[c]++] = i;
-    return lists;
-  }
-
-  // Each cell's site, then its points removed in the stage.
-  Cell_lists candidates_by_cell(const Array<Index>& sites, const Array<Index>& stage_removed)
-  {
-    Array<Index> all(sites.begin(), sites.end());
-    all.insert(all.end(), stage_removed.begin(), stage_removed.end());
-    return lists_by_slot(sites.size(), all, [&](Index i) { return m_slot[cell_of(i)]; });
-  }
-
-  // Each cell's points in input order; those of cells without a present
-  // point are left out.
-  Cell_lists members_by_cell(std::size_t cells)
-  {
-    return lists_by_slot(cells, m_by_input, [&](Index i) { return m_slot[cell_of(i)]; });
-  }
-
-  static Index median_of(const Indexed_points& points, std::pair<const Index*, const Index*> candidates,
-                         std::pair<const Index*, const Index*> members)
-  {
-    Index best = *candidates.first;
-    double best_sum = std::numeric_limits<double>::infinity();
-    for (const Index* c = candidates.first; c != candidates.second; ++c)
+      std::fill(cell_of_candidate.begin() + std::ptrdiff_t(candidates.first[c]),
+                cell_of_candidate.begin() + std::ptrdiff_t(candidates.first[c + 1]), Index(c));
+    Array<Merits> merits(candidates.members.size());
+    for_each_index<ConcurrencyTag>(
+      merits.size(),
+      [&](std::size_t k) {
+        const Index c = cell_of_candidate[k], id = candidates.members[k];
+        merits[k] = merits_of(points, members.begin(c), members.end(c), Neighbor{ 0., points.input_position[id], id });
+      },
+      [](std::size_t) { return true; });
+    Array<Index> median(cells);
+    for (std::size_t c = 0; c < cells; ++c)
     {
-      double sum = 0.;
-      for (const Index* m = members.first; m != members.second; ++m)
-        sum += std::sqrt(squared_distance(points.points[*m], points.points[*c]));
-      if (sum < best_sum || (sum == best_sum && points.input_position[*c] < points.input_position[best]))
-      {
-        best = *c;
-        best_sum = sum;
-      }
+      CGAL_assertion(candidates.first[c] < candidates.first[c + 1]);
+      const Merits* best = &merits[candidates.first[c]];
+      for (std::size_t k = candidates.first[c] + 1; k < candidates.first[c + 1]; ++k)
+        if (nearer_median(merits[k], *best))
+          best = &merits[k];
+      median[c] = best->member.id;
     }
-    return best;
+    return median;
   }
 
   // The root of the cell of `i`, halving the paths on the way.
@@ -180,7 +165,6 @@ private:
 
   Array<Index> m_by_input;
   Array<Index> m_parent;
-  Array<Index> m_slot; // by cell root, the rank of its present point among the sites, while relocating
 };
 
 } // namespace internal

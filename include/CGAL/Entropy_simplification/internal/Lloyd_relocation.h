@@ -8,11 +8,14 @@
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_LLOYD_RELOCATION_H
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Cell_medians.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
+
+#include <boost/range/irange.hpp>
 
 #include <algorithm>
 #include <array>
@@ -58,29 +61,14 @@ Voronoi_cells voronoi_cells(const Indexed_points& points, const Array<char>& pre
   return cells;
 }
 
-// The members of each cell, in input order: those of cell c at
-// members[first[c], first[c + 1]).
-struct Cell_members
-{
-  Array<std::size_t> first;
-  Array<Index> members;
-};
-
-// Counted into place by cell, then sorted by input position within each
-// cell: the cells are small, and their members close in the internal order.
+// The members of each cell in input order, grouped in the internal order,
+// then sorted by input position within each cell: the cells are small, and
+// their members close in the internal order.
 template <typename ConcurrencyTag>
 Cell_members members_by_cell(const Indexed_points& points, const Voronoi_cells& cells)
 {
-  Cell_members result;
-  result.first.assign(cells.sites.size() + 1, 0);
-  for (Index c : cells.site_of)
-    ++result.first[c + 1];
-  for (std::size_t c = 0; c < cells.sites.size(); ++c)
-    result.first[c + 1] += result.first[c];
-  Array<std::size_t> next(result.first.begin(), result.first.end() - 1);
-  result.members.resize(points.size());
-  for (Index i = 0; i < Index(points.size()); ++i)
-    result.members[next[cells.site_of[i]]++] = i;
+  Cell_members result = group_by_cell(cells.sites.size(), boost::irange(Index(0), Index(points.size())),
+                                      [&](Index i) { return cells.site_of[i]; });
   for_each_index<ConcurrencyTag>(
     cells.sites.size(),
     [&](std::size_t c) {
@@ -127,28 +115,6 @@ std::array<Neighbor, candidates_per_cell> members_nearest_centroid(const Indexed
   return nearest;
 }
 
-// A member's merits as the representative of its cell: the sum of its
-// distances to the members, summed in input order, and the square of the
-// greatest.
-struct Merits
-{
-  Neighbor member;
-  double distance_sum;
-  double squared_radius;
-};
-
-inline Merits merits_of(const Indexed_points& points, const Index* first, const Index* beyond, Neighbor member)
-{
-  Merits r{ member, 0., 0. };
-  for (const Index* i = first; i != beyond; ++i)
-  {
-    const double d2 = squared_distance(points.points[*i], points.points[member.id]);
-    r.distance_sum += std::sqrt(d2);
-    r.squared_radius = (std::max)(r.squared_radius, d2);
-  }
-  return r;
-}
-
 // The candidate of least distance sum (ties by input position) among the
 // `candidates` members nearest the centroid whose radius is within
 // `squared_bound`; the one nearest the centroid always is, the bound being
@@ -163,9 +129,7 @@ Index cell_median(const Indexed_points& points, const Index* first, const Index*
   for (std::size_t c = 1; c < count; ++c)
   {
     const Merits r = merits_of(points, first, beyond, nearest[c]);
-    if (r.squared_radius <= squared_bound &&
-        (r.distance_sum < best.distance_sum ||
-         (r.distance_sum == best.distance_sum && r.member.input_position < best.member.input_position)))
+    if (r.squared_radius <= squared_bound && nearer_median(r, best))
       best = r;
   }
   return best.member.id;
@@ -184,8 +148,8 @@ double greatest_squared_radius_about_centroids(const Indexed_points& points, con
   for_each_index<ConcurrencyTag>(
     squared_radius.size(),
     [&](std::size_t c) {
-      const Index* first = cell.members.data() + cell.first[c];
-      const Index* beyond = cell.members.data() + cell.first[c + 1];
+      const Index* first = cell.begin(c);
+      const Index* beyond = cell.end(c);
       std::size_t count = 0;
       squared_radius[c] =
         merits_of(points, first, beyond, members_nearest_centroid<1>(points, first, beyond, count)[0]).squared_radius;
@@ -209,8 +173,8 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
   for_each_index<ConcurrencyTag>(
     cells.sites.size(),
     [&](std::size_t c) {
-      const Index* first = cell.members.data() + cell.first[c];
-      const Index* beyond = cell.members.data() + cell.first[c + 1];
+      const Index* first = cell.begin(c);
+      const Index* beyond = cell.end(c);
       // the median of one candidate is the member nearest the centroid
       chosen[c] = terms.medians ? cell_median<candidates_per_cell>(points, first, beyond, squared_bound)
                                 : cell_median<1>(points, first, beyond, squared_bound);

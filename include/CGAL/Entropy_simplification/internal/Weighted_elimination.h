@@ -67,7 +67,9 @@ inline std::int64_t rounded(double x)
 }
 
 // The weight of a pair, in units of 2^-40 so that sums and differences of
-// weights are exact whatever their order: (1 - d / (2 r s))^2 within 2 r s,
+// weights are exact whatever their order (a pair weighs at most 2^40, so a
+// point's sum fits in 63 bits up to 2^23 neighbours, far more than the
+// neighbour lists held in memory have): (1 - d / (2 r s))^2 within 2 r s,
 // s the mean of the two points' scales, d not below the limit times s.
 // Yuksel's exponent is 8, for blue noise. A square weighs the farther
 // neighbours more, which on the tuned inputs of the benchmark lowered the
