@@ -191,26 +191,27 @@ TEST_CASE("Default mode: the removal order equals the reference's, sequentially 
   for (const Setting& setting : { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 } })
     for (double feature_weight : { 3., 6., 0. })
       for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
-      {
-        ES::Options options;
-        options.feature_weight = feature_weight;
-        options.normal_estimation = method;
-        // several stages: 800 points to 400, 200, then 160
-        const std::size_t target = setting.cloud.points.size() / 5;
-        INFO(setting.cloud.name << ", k = " << setting.k << ", feature weight " << feature_weight << ", normals "
-                                << int(method) << ", target " << target);
-        const reference::Field field = reference::feature_field(setting.cloud.points, setting.k, options);
-        REQUIRE(field.coarse_count >= setting.k + 1);
-        const std::vector<std::size_t> expected = reference::removal_order(setting.cloud.points, field, target);
+        // several stages: 800 points to 400, 200, then 160; one stage to 640,
+        // with the eighth power of the weight (it keeps more than 55%)
+        for (std::size_t target : { setting.cloud.points.size() / 5, setting.cloud.points.size() * 4 / 5 })
+        {
+          ES::Options options;
+          options.feature_weight = feature_weight;
+          options.normal_estimation = method;
+          INFO(setting.cloud.name << ", k = " << setting.k << ", feature weight " << feature_weight << ", normals "
+                                  << int(method) << ", target " << target);
+          const reference::Field field = reference::feature_field(setting.cloud.points, setting.k, options);
+          REQUIRE(field.coarse_count >= setting.k + 1);
+          const std::vector<std::size_t> expected = reference::removal_order(setting.cloud.points, field, target);
 
-        const auto np = CGAL::parameters::number_of_output_points(target);
-        const Run sequential = simplify<CGAL::Sequential_tag>(setting.cloud.points, setting.k, np, options);
-        CHECK(sequential.kept == target);
-        CHECK(removals(sequential) == expected);
-        const Run parallel = test_parallel::on_two_threads_or_more(
-          [&] { return simplify<test_parallel::Parallel_tag>(setting.cloud.points, setting.k, np, options); });
-        CHECK(removals(parallel) == expected);
-      }
+          const auto np = CGAL::parameters::number_of_output_points(target);
+          const Run sequential = simplify<CGAL::Sequential_tag>(setting.cloud.points, setting.k, np, options);
+          CHECK(sequential.kept == target);
+          CHECK(removals(sequential) == expected);
+          const Run parallel = test_parallel::on_two_threads_or_more(
+            [&] { return simplify<test_parallel::Parallel_tag>(setting.cloud.points, setting.k, np, options); });
+          CHECK(removals(parallel) == expected);
+        }
 }
 
 TEST_CASE("Default mode: the removal order equals the reference's on tied distances and small clouds",
@@ -228,14 +229,15 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
   for (const test_clouds::Cloud& cloud : clouds)
     for (double feature_weight : { 0., 3. })
       for (ES::Normal_estimation method : { ES::Normal_estimation::pca, ES::Normal_estimation::jet })
-        // one stage, then several stages halving the count
-        for (std::size_t divisor : { std::size_t(2), std::size_t(7) })
+        // one stage, several stages halving the count, one stage keeping
+        // more than 55% (the eighth power of the weight)
+        for (std::size_t tenths : { std::size_t(5), std::size_t(1), std::size_t(8) })
         {
           ES::Options options;
           options.feature_weight = feature_weight;
           options.normal_estimation = method;
           const unsigned int k = 8;
-          const std::size_t target = cloud.points.size() / divisor;
+          const std::size_t target = cloud.points.size() * tenths / 10;
           INFO(cloud.name << ", feature weight " << feature_weight << ", normals " << int(method) << ", target "
                           << target);
           const std::vector<std::size_t> expected =

@@ -240,6 +240,23 @@ TEST_CASE("Feature field: the coarse stride and the stages of the elimination", 
     CHECK(ESI::pair_weight(a, Point(0, 0.75, 0), 1., 0.5, stage) == 274877906944);
     CHECK(ESI::pair_weight(Point(0, 0.75, 0), a, 0.5, 1., stage) == 274877906944);
   }
+  SECTION("the eighth power in the stages that keep more than 55% of the input")
+  {
+    CHECK(ESI::keeps_most_points(56, 100));
+    CHECK_FALSE(ESI::keeps_most_points(55, 100));
+    CHECK_FALSE(ESI::keeps_most_points(50, 100));
+    // 11 of 20 is exactly 55%
+    CHECK_FALSE(ESI::keeps_most_points(11, 20));
+    CHECK(ESI::keeps_most_points(12, 20));
+    ESI::Elimination_stage stage{ 100, 1., 0.4 };
+    stage.eighth_power = true;
+    // d = 1 within reach 2: (1/2)^8 = 2^-8, that is 2^32 units
+    CHECK(ESI::pair_weight(Point(0, 0, 0), Point(1, 0, 0), 1., 1., stage) == 4294967296);
+    // d = 0.3 counts as the limit 0.4: 0.8^8 = 0.16777216, times 2^40 =
+    // 184467440737.09551616
+    CHECK(ESI::pair_weight(Point(0, 0, 0), Point(0.3, 0, 0), 1., 1., stage) == 184467440737);
+    CHECK(ESI::pair_weight(Point(0, 0, 0), Point(2, 0, 0), 1., 1., stage) == 0);
+  }
 }
 
 TEST_CASE("Default mode: the normals written are CGAL's normals of the input at the kept points",

@@ -421,7 +421,15 @@ struct Stage
   std::size_t target;
   double radius; // of a hexagonal packing of `target` points on the effective area
   double limit;  // Yuksel's weight limiting
+  int exponent = 2; // of the pair weight
 };
+
+// Yuksel's eighth power in the stages that keep more than 55% of the `n`
+// input points, the square in the others.
+inline int weight_exponent(std::size_t stage_target, std::size_t n)
+{
+  return 100 * stage_target > 55 * n ? 8 : 2;
+}
 
 // The stage from `present` points down to `stage_target`.
 inline Stage stage_to(std::size_t present, std::size_t stage_target, double effective_area)
@@ -439,8 +447,9 @@ inline Stage stage_from(std::size_t present, std::size_t target, double effectiv
   return stage_to(present, (std::max)(target, (present + 1) / 2), effective_area);
 }
 
-// (1 - d / 2r s)^2 within 2 r s, s the mean of the two scales, d not below
-// the limit times s; in units of 2^-40, so that sums are exact in any order.
+// (1 - d / 2r s)^e within 2 r s, e the stage's exponent, s the mean of the
+// two scales, d not below the limit times s; in units of 2^-40, so that sums
+// are exact in any order.
 inline std::int64_t pair_weight(const Point& a, const Point& b, double scale_a, double scale_b, const Stage& stage)
 {
   const double reach = stage.radius * (scale_a + scale_b);
@@ -448,8 +457,10 @@ inline std::int64_t pair_weight(const Point& a, const Point& b, double scale_a, 
   if (d >= reach)
     return 0;
   const double floor = stage.limit * (scale_a + scale_b) / 2.;
-  const double w = 1. - (std::max)(d, floor) / reach;
-  return std::llround(w * w * std::ldexp(1., 40));
+  double w = 1. - (std::max)(d, floor) / reach;
+  for (int power = 1; power < stage.exponent; power *= 2)
+    w *= w;
+  return std::llround(w * std::ldexp(1., 40));
 }
 
 // The weight of every pair of distinct points in a stage, row by row: the
@@ -503,8 +514,9 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
   std::vector<std::size_t> removed;
   while (count > target)
   {
-    const Stage stage = halving ? stage_from(count, target, field.effective_area)
-                                : stage_to(count, target, field.effective_area);
+    Stage stage = halving ? stage_from(count, target, field.effective_area)
+                          : stage_to(count, target, field.effective_area);
+    stage.exponent = weight_exponent(stage.target, points.size());
     const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
     for (; count > stage.target; --count)
     {
@@ -741,7 +753,8 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
   std::vector<std::size_t> removed;
   while (count > 1)
   {
-    const Stage stage = stage_to(count, stage_end(count, n), field.effective_area);
+    Stage stage = stage_to(count, stage_end(count, n), field.effective_area);
+    stage.exponent = weight_exponent(stage.target, n);
     const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
     std::vector<std::size_t> stage_removed;
     for (; count > stage.target; --count)
