@@ -261,6 +261,7 @@ reference::Terms reference_terms(const ESI::Default_mode_terms& t)
   r.relocation = t.relocation;
   r.medians = t.medians;
   r.radius_bound = t.radius_bound;
+  r.coverage_swaps = t.coverage_swaps;
   return r;
 }
 
@@ -283,7 +284,7 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
   const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
                                           Setting{ test_clouds::wavy_surface(600, 0.01, 4), 8 } };
   std::vector<ESI::Term_switched_off> ablation = ESI::each_term_switched_off();
-  REQUIRE(ablation.size() == 7);
+  REQUIRE(ablation.size() == 8);
   ablation.insert(ablation.begin(), { "none", ESI::Default_mode_terms() });
   std::vector<std::vector<std::size_t> > with_all_terms;
   for (const ESI::Term_switched_off& off : ablation)
@@ -316,6 +317,92 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
     if (term != "none")
       CHECK(changes_an_order);
   }
+}
+
+namespace {
+
+// The points present after the library's coverage swaps, by input position.
+template <typename ConcurrencyTag>
+std::vector<bool> swapped_by_the_library(const std::vector<Point>& points, const std::vector<bool>& present,
+                                         std::size_t swaps)
+{
+  const ESI::Indexed_points indexed =
+    ESI::sort_spatially<ConcurrencyTag>(ESI::Array<ESI::Working_point>(points.begin(), points.end()));
+  ESI::Array<char> flags(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    flags[i] = present[indexed.input_position[i]];
+  ESI::swap_farthest_for_crowded<ConcurrencyTag>(indexed, flags, swaps);
+  std::vector<bool> result(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    result[indexed.input_position[i]] = flags[i] != 0;
+  return result;
+}
+
+double greatest_squared_distance(const std::vector<Point>& points, const std::vector<bool>& present)
+{
+  double greatest = 0.;
+  for (std::size_t p = 0; p < points.size(); ++p)
+    greatest = (std::max)(greatest, reference::squared_distance_to_present(points, present, p));
+  return greatest;
+}
+
+} // namespace
+
+TEST_CASE("Default mode: the coverage swaps equal the reference's, and never widen the greatest gap",
+          "[default][reference][coverage]")
+{
+  test_parallel::require_tbb();
+  // Present points from a plain thinning, clustered so that gaps and crowds
+  // both occur: every third point, and every point of a dense patch.
+  for (const test_clouds::Cloud& cloud : { fold(3000, 0.003, 21), test_clouds::wavy_surface(2500, 0.01, 22) })
+    for (std::size_t swaps : { std::size_t(1), std::size_t(7), std::size_t(60) })
+    {
+      const std::vector<Point>& points = cloud.points;
+      std::vector<bool> present(points.size());
+      for (std::size_t p = 0; p < points.size(); ++p)
+        present[p] = p % 3 == 0 || (p % 7 == 1 && points[p].x() < points[0].x());
+      INFO(cloud.name << ", " << swaps << " swaps");
+      std::vector<bool> expected = present;
+      reference::swap_farthest_for_crowded(points, expected, swaps);
+      CHECK(expected != present);
+      CHECK(std::count(expected.begin(), expected.end(), true) == std::count(present.begin(), present.end(), true));
+      CHECK(greatest_squared_distance(points, expected) <= greatest_squared_distance(points, present));
+      CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps) == expected);
+      CHECK(test_parallel::on_two_threads_or_more([&] {
+              return swapped_by_the_library<test_parallel::Parallel_tag>(points, present, swaps);
+            }) == expected);
+    }
+}
+
+TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[default][reference][coverage]")
+{
+  // Evenly spaced on a line, every other point present: the farthest point
+  // (1) would come in, but every present point leaving would leave a point
+  // as far as the farthest then is (3, at 1), so nothing changes.
+  const std::vector<Point> line = { Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(3, 0, 0), Point(4, 0, 0) };
+  const std::vector<bool> present = { true, false, true, false, true };
+  std::vector<bool> expected = present;
+  reference::swap_farthest_for_crowded(line, expected, 3);
+  CHECK(expected == present);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, present, 3) == present);
+  // Two crowded points (0 and 1) and a gap: the farthest point (5) comes in
+  // and the most crowded (0) leaves for it. A second swap would bring 4 in,
+  // but 1 is no longer crowded and 3 cannot leave: the swaps end there.
+  const std::vector<Point> gap = { Point(0, 0, 0), Point(0.2, 0, 0), Point(0.4, 0, 0),
+                                   Point(3, 0, 0), Point(4, 0, 0),   Point(5, 0, 0) };
+  const std::vector<bool> before = { true, true, false, true, false, false };
+  const std::vector<bool> after = { false, true, false, true, false, true };
+  for (std::size_t swaps : { 1, 2 })
+  {
+    std::vector<bool> swapped = before;
+    reference::swap_farthest_for_crowded(gap, swapped, swaps);
+    CHECK(swapped == after);
+    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps) == after);
+  }
+  // Every point present, or a single one: no swap.
+  const std::vector<bool> all(5, true), one = { false, false, true, false, false };
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, all, 3) == all);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, one, 3) == one);
 }
 
 namespace {

@@ -51,6 +51,7 @@ struct Terms
   bool relocation = true;     // the kept points are relocated
   bool medians = true;        // each cell keeps its median
   bool radius_bound = true;   // within the radius bound
+  bool coverage_swaps = true; // the farthest points swapped in for crowded ones
 };
 
 // Every point is named by its input position; ties in distance go to the
@@ -625,27 +626,106 @@ inline std::vector<bool> relocation_step(const std::vector<Point>& points, const
   return relocated;
 }
 
+// The present point nearest `points[p]` other than `p` and `excluded`, at
+// an infinite distance when there is none.
+inline Neighbor nearest_present_but(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t p,
+                                    std::size_t excluded)
+{
+  Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
+  for (std::size_t q = 0; q < points.size(); ++q)
+    if (present[q] && q != p && q != excluded)
+      nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[q]), q });
+  return nearest;
+}
+
+inline double squared_distance_to_present(const std::vector<Point>& points, const std::vector<bool>& present,
+                                          std::size_t p)
+{
+  return squared_distance(points[p], points[nearest_present(points, present, p)]);
+}
+
+// The coverage swaps, up to `swaps` times: the point farthest from the
+// present points (ties: the lowest position) becomes present. Then the
+// present points of the start are tried in the order of their squared
+// distance, at the start, to their nearest other present point (ties: the
+// lowest position), each once over all the swaps: the first one still
+// present, no farther from its nearest other present point than at the
+// start, and such that each point whose nearest present point it is would be
+// nearer its nearest present point other than it than the farthest point
+// now is from its own, is no longer present. When none is, the farthest
+// point is not present either, and the swaps end.
+inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vector<bool>& present, std::size_t swaps)
+{
+  const std::size_t n = points.size();
+  std::vector<Neighbor> crowded;
+  for (std::size_t p = 0; p < n; ++p)
+    if (present[p])
+      crowded.emplace_back(nearest_present_but(points, present, p, p).first, p);
+  if (crowded.size() < 2 || crowded.size() == n)
+    return;
+  std::sort(crowded.begin(), crowded.end());
+  std::size_t tried = 0;
+  for (std::size_t swap = 0; swap < swaps; ++swap)
+  {
+    std::size_t farthest = n;
+    double farthest_distance = -1.;
+    for (std::size_t p = 0; p < n; ++p)
+      if (!present[p] && squared_distance_to_present(points, present, p) > farthest_distance)
+      {
+        farthest = p;
+        farthest_distance = squared_distance_to_present(points, present, p);
+      }
+    if (farthest == n)
+      return;
+    present[farthest] = true;
+    double greatest = 0.;
+    for (std::size_t p = 0; p < n; ++p)
+      greatest = (std::max)(greatest, squared_distance_to_present(points, present, p));
+    bool left = false;
+    while (tried < crowded.size() && !left)
+    {
+      const auto [crowding, y] = crowded[tried++];
+      if (!present[y] || nearest_present_but(points, present, y, y).first > crowding)
+        continue;
+      bool stays_near = true;
+      for (std::size_t p = 0; p < n; ++p)
+        if (nearest_present(points, present, p) == y && !(nearest_present_but(points, present, p, y).first < greatest))
+          stays_near = false;
+      present[y] = !stays_near;
+      left = stays_near;
+    }
+    if (!left)
+    {
+      present[farthest] = false;
+      return;
+    }
+  }
+}
+
 // ----------------------------------------------------------------------------
 // The default mode
 // ----------------------------------------------------------------------------
 
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
-// relocation; the j-th point the relocation drops takes the place, in the
+// relocation and the coverage swaps, one per thousand kept points rounded
+// up; the j-th point the relocation drops takes the place, in the
 // removal order, of the j-th point it brings in, both in input order. The
 // `terms` switched off are left out.
 inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, const Field& field,
                                               std::size_t target, const Terms& terms = Terms())
 {
   std::vector<std::size_t> removed = eliminate(points, field, target, {}, terms.halving_stages);
-  if (!terms.relocation)
+  if ((!terms.relocation && !terms.coverage_swaps) || removed.empty())
     return removed;
   std::vector<bool> eliminated(points.size(), true);
   for (std::size_t p : removed)
     eliminated[p] = false;
   std::vector<bool> relocated = eliminated;
-  for (int iteration = 0; iteration < 2; ++iteration)
+  for (int iteration = 0; iteration < (terms.relocation ? 2 : 0); ++iteration)
     relocated = relocation_step(points, relocated, terms);
+  if (terms.coverage_swaps)
+    swap_farthest_for_crowded(points, relocated, (target + 999) / 1000);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {

@@ -42,6 +42,9 @@ struct Default_mode_terms
   // no median moves a cell's radius beyond the greatest of the members
   // nearest the centroids (see greatest_squared_radius_about_centroids)
   bool radius_bound = true;
+  // the relocated points end with a few swaps of the points farthest from
+  // them for the most crowded of them (see swap_farthest_for_crowded)
+  bool coverage_swaps = true;
 };
 
 // The terms with one of them switched off, and the name of that term.
@@ -68,6 +71,7 @@ inline std::vector<Term_switched_off> each_term_switched_off()
   off("relocation", &Default_mode_terms::relocation);
   off("medians (members nearest the centroids)", &Default_mode_terms::medians);
   off("radius bound of the medians", &Default_mode_terms::radius_bound);
+  off("coverage swaps", &Default_mode_terms::coverage_swaps);
   return each;
 }
 

@@ -9,6 +9,7 @@
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Cell_medians.h>
+#include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
@@ -188,8 +189,9 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
 
 // A relaxation in Lloyd's manner restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
-// cell keeps its median (see cell_medians, and `terms`). The count does not
-// change.
+// cell keeps its median (see cell_medians, and `terms`); then, with
+// `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count). The
+// count does not change.
 // Returns the pairs (point no longer present, point present instead), both
 // taken in input order.
 template <typename ConcurrencyTag>
@@ -200,6 +202,9 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
   const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
+  if (terms.coverage_swaps)
+    swap_farthest_for_crowded<ConcurrencyTag>(
+      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1)))));
 
   Array<Index> gone, come;
   for (Index i : by_input)

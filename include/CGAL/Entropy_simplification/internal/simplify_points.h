@@ -77,8 +77,9 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
   return present;
 }
 
-// The relocation that ends the default mode. A relocated point takes the
-// place, in the removal order, of the point that replaces it.
+// The relocation that ends the default mode, with the `terms` switched on.
+// A relocated point takes the place, in the removal order, of the point
+// that replaces it.
 template <typename ConcurrencyTag>
 void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms)
 {
@@ -86,7 +87,7 @@ void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_
   Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
-  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, relocation_iterations, terms))
+  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms))
     run.removed[rank[swap.second]] = swap.first;
 }
 
@@ -186,7 +187,7 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
-  if (terms.relocation && run.completed && !run.removed.empty())
+  if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
     relocate<ConcurrencyTag>(indexed, run, terms);
   if (through && !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, callback)))
     return std::nullopt;
