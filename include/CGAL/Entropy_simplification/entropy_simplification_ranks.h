@@ -95,7 +95,7 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
      `CGAL::entropy_simplify_point_set()` asking for `L` points keeps;
    - the points that call removes follow, the last removed first: a longer
      prefix is the state of its elimination when that many points remained,
-     before the relocation that ends the call;
+     before the relocation and the coverage swaps that end the call;
    - the `L` kept points are ordered by going on with the elimination among
      them down to one point, in stages that end at the level boundaries:
      50, 20, 10, 5, 2, 1, 0.5, 0.2, 0.1%, ... of the distinct points,

@@ -210,7 +210,7 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
                        exactly what a call asking for that number of points gives. In
                        the default mode, whose stages and radius depend on the target,
                        it is the state of the elimination at that moment, without the
-                       final relocation.}
+                       final relocation and coverage swaps.}
      \cgalParamNEnd
 
      \cgalParamNBegin{geom_traits}

@@ -13,6 +13,8 @@
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
+#include <boost/iterator/counting_iterator.hpp>
+
 #include <algorithm>
 #include <cstddef>
 #include <limits>
@@ -31,10 +33,11 @@ inline std::size_t coverage_swap_count(std::size_t kept) { return (kept + 999) /
 
 // Each point's nearest present point (ties by input position), its cell,
 // and the points not present farthest from theirs, kept up to date as
-// points are made present or not. The present points of the start are
-// searched in a tree, those made present since in a list: a few per
-// thousand. The farthest points are a heap of every change, the outdated
-// entries skipped when they come to the top.
+// points are made present or not. The searches run in a tree of every
+// point, those not present left out. The farthest points are a heap of the
+// points beyond a threshold and of every change since it was set, the
+// outdated entries skipped when they come to the top; when none beyond the
+// threshold is left, it is set again lower.
 class Nearest_present
 {
   static constexpr Index none = Index(-1);
@@ -47,45 +50,55 @@ class Nearest_present
   }
 
 public:
+  // `sites`, the present points, in a tree of their own for the first search.
   template <typename ConcurrencyTag>
-  Nearest_present(const Indexed_points& points, Array<char>& present, const Array<Index>& sites, ConcurrencyTag)
-    : m_points(points), m_present(present), m_tree(points, sites.begin(), sites.end(), ConcurrencyTag()),
-      m_nearest(points.size()), m_first_member(points.size(), none), m_next_member(points.size(), none)
+  Nearest_present(const Indexed_points& points, Array<char>& present, const Point_tree& sites, std::size_t heap_size,
+                  ConcurrencyTag)
+    : m_points(points), m_present(present), m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
+             ConcurrencyTag()),
+      m_site(points.size()), m_first_member(points.size(), none), m_next_member(points.size(), none),
+      m_heap_size(heap_size)
   {
     for_each_index<ConcurrencyTag>(
-      points.size(),
-      [&](std::size_t i) {
-        m_nearest[i] = neighbor(Index(i), present[i] ? Index(i) : m_tree.nearest_one(Index(i)));
-      },
+      points.size(), [&](std::size_t i) { m_site[i] = present[i] ? Index(i) : sites.nearest_one(Index(i)); },
       [](std::size_t) { return true; });
     for (Index i = 0; i < Index(points.size()); ++i)
     {
       link(i);
       if (!present[i])
-        m_far.push_back(Neighbor{ m_nearest[i].squared_distance, points.input_position[i], i });
+        m_tree.remove(i);
     }
-    std::make_heap(m_far.begin(), m_far.end(), below);
+    fill_heap();
   }
+
+  bool is_present(Index i) const { return m_present[i] != 0; }
+
+  Neighbor nearest(Index i) const { return neighbor(i, m_site[i]); }
 
   // The point farthest from the present points, or nothing when every point is present.
   std::optional<Index> farthest()
   {
-    while (!m_far.empty() && (m_present[m_far.front().id] ||
-                              m_far.front().squared_distance != m_nearest[m_far.front().id].squared_distance))
+    for (;;)
     {
-      std::pop_heap(m_far.begin(), m_far.end(), below);
-      m_far.pop_back();
+      while (!m_far.empty() && (m_present[m_far.front().id] ||
+                                m_far.front().squared_distance != nearest(m_far.front().id).squared_distance))
+      {
+        std::pop_heap(m_far.begin(), m_far.end(), below);
+        m_far.pop_back();
+      }
+      if (!m_far.empty() && m_far.front().squared_distance >= m_threshold)
+        return m_far.front().id;
+      if (m_threshold == 0.)
+        return m_far.empty() ? std::nullopt : std::optional<Index>(m_far.front().id);
+      fill_heap();
     }
-    return m_far.empty() ? std::nullopt : std::optional<Index>(m_far.front().id);
   }
-
-  bool is_present(Index i) const { return m_present[i] != 0; }
 
   // The greatest squared distance from a point to the present points.
   double greatest_squared_distance()
   {
     const std::optional<Index> f = farthest();
-    return f ? m_nearest[*f].squared_distance : 0.;
+    return f ? nearest(*f).squared_distance : 0.;
   }
 
   // The present point nearest `q` other than `q` and `excluded`, at an
@@ -93,18 +106,11 @@ public:
   Neighbor nearest_but(Index q, Index excluded) const
   {
     thread_local Array<Neighbor> best;
-    Neighbor result{ std::numeric_limits<double>::infinity(), none, none };
     m_tree.nearest(q, 2, best);
     for (const Neighbor& b : best)
       if (b.id != excluded)
-      {
-        result = b;
-        break;
-      }
-    for (Index a : m_added)
-      if (a != q && a != excluded)
-        result = (std::min)(result, neighbor(q, a));
-    return result;
+        return b;
+    return Neighbor{ std::numeric_limits<double>::infinity(), none, none };
   }
 
   // Makes `x` present: it takes into its cell the points nearer it than to
@@ -113,37 +119,33 @@ public:
   // points within twice its distance.
   void make_present(Index x)
   {
-    const double squared_reach = 4. * m_nearest[x].squared_distance * (1. + 1e-9);
+    const double squared_reach = 4. * nearest(x).squared_distance * (1. + 1e-9);
     const Array<Index> near = present_within(x, squared_reach);
     m_present[x] = 1;
-    m_added.push_back(x);
-    move(x, neighbor(x, x));
+    m_tree.restore(x);
+    move(x, x);
     for (Index s : near)
       for (Index p : members(s))
-        if (neighbor(p, x) < m_nearest[p])
-          move(p, neighbor(p, x));
+        if (neighbor(p, x) < nearest(p))
+          move(p, x);
   }
 
   // The members of `y`'s cell with their nearest present points other than
   // `y`: where they go once `y` is no longer present.
-  Array<std::pair<Index, Neighbor> > cell_without(Index y) const
+  Array<std::pair<Index, Index> > cell_without(Index y) const
   {
-    Array<std::pair<Index, Neighbor> > moves;
+    Array<std::pair<Index, Index> > moves;
     for (Index p : members(y))
-      moves.emplace_back(p, nearest_but(p, y));
+      moves.emplace_back(p, nearest_but(p, y).id);
     return moves;
   }
 
   // Makes `y` no longer present, the members of its cell going as
   // `moves` (cell_without(y)) says.
-  void make_absent(Index y, const Array<std::pair<Index, Neighbor> >& moves)
+  void make_absent(Index y, const Array<std::pair<Index, Index> >& moves)
   {
     m_present[y] = 0;
-    const auto added = std::find(m_added.begin(), m_added.end(), y);
-    if (added != m_added.end())
-      m_added.erase(added);
-    else
-      m_tree.remove(y);
+    m_tree.remove(y);
     for (const auto& [p, site] : moves)
       move(p, site);
   }
@@ -177,49 +179,72 @@ private:
     for (const Neighbor& s : near)
       if (s.squared_distance <= squared_reach)
         result.push_back(s.id);
-    for (Index a : m_added)
-      if (a != q && neighbor(q, a).squared_distance <= squared_reach)
-        result.push_back(a);
     return result;
   }
 
-  // `p` joins the cell of `site`, its new nearest present point.
-  void move(Index p, const Neighbor& site)
+  // The heap holds again every point not present at least as far as the
+  // `m_heap_size` farthest (all of them when as few), the threshold.
+  void fill_heap()
   {
-    Index* at = &m_first_member[m_nearest[p].id];
+    Array<double> distances;
+    for (Index i = 0; i < Index(m_points.size()); ++i)
+      if (!m_present[i])
+        distances.push_back(nearest(i).squared_distance);
+    m_threshold = 0.;
+    if (distances.size() > m_heap_size)
+    {
+      std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(m_heap_size - 1), distances.end(),
+                       [](double a, double b) { return a > b; });
+      m_threshold = distances[m_heap_size - 1];
+    }
+    Array<double>().swap(distances);
+    m_far.clear();
+    for (Index i = 0; i < Index(m_points.size()); ++i)
+      if (!m_present[i] && nearest(i).squared_distance >= m_threshold)
+        m_far.push_back(Neighbor{ nearest(i).squared_distance, m_points.input_position[i], i });
+    std::make_heap(m_far.begin(), m_far.end(), below);
+    m_heap_size *= 2;
+  }
+
+  // `p` joins the cell of `site`, its new nearest present point.
+  void move(Index p, Index site)
+  {
+    Index* at = &m_first_member[m_site[p]];
     while (*at != p)
       at = &m_next_member[*at];
     *at = m_next_member[p];
-    m_nearest[p] = site;
+    m_site[p] = site;
     link(p);
     if (!m_present[p])
     {
-      m_far.push_back(Neighbor{ site.squared_distance, m_points.input_position[p], p });
+      m_far.push_back(nearest(p));
+      m_far.back().input_position = m_points.input_position[p];
+      m_far.back().id = p;
       std::push_heap(m_far.begin(), m_far.end(), below);
     }
   }
 
   void link(Index p)
   {
-    m_next_member[p] = m_first_member[m_nearest[p].id];
-    m_first_member[m_nearest[p].id] = p;
+    m_next_member[p] = m_first_member[m_site[p]];
+    m_first_member[m_site[p]] = p;
   }
 
   const Indexed_points& m_points;
   Array<char>& m_present;
-  Point_tree m_tree;    // the present points of the start, less those made absent
-  Array<Index> m_added; // the points made present since
-  Array<Neighbor> m_nearest;
+  Point_tree m_tree;   // every point, those not present left out
+  Array<Index> m_site; // each point's nearest present point
   Array<Index> m_first_member, m_next_member; // each cell's members, as a list
-  Array<Neighbor> m_far; // the points not present, by their distance at each change
+  std::size_t m_heap_size;
+  double m_threshold = 0.;
+  Array<Neighbor> m_far; // (squared distance, input position, point), as the heap's entries
 };
 
 // The present points, most crowded first: by the distance to their nearest
 // other present point (ties by input position).
 template <typename ConcurrencyTag>
-Array<Neighbor> present_by_crowding(const Indexed_points& points, const Array<Index>& sites)
+Array<Neighbor> present_by_crowding(const Indexed_points& points, const Array<Index>& sites, const Point_tree& tree)
 {
-  const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
   Array<Neighbor> crowding(sites.size());
   for_each_index<ConcurrencyTag>(
     sites.size(),
@@ -238,8 +263,8 @@ Array<Neighbor> present_by_crowding(const Indexed_points& points, const Array<In
 // was, whose cell's members would all be nearer their new nearest present
 // points than the farthest point then is. The points passed, and the one
 // returned, are passed for good. Nothing when none is left.
-inline std::optional<Index> next_to_leave(Nearest_present& nearest, const Array<Neighbor>& crowded,
-                                          std::size_t& next)
+inline std::optional<Index> next_to_leave(const Indexed_points& points, Nearest_present& nearest,
+                                          const Array<Neighbor>& crowded, std::size_t& next)
 {
   const double greatest = nearest.greatest_squared_distance();
   while (next < crowded.size())
@@ -247,9 +272,10 @@ inline std::optional<Index> next_to_leave(Nearest_present& nearest, const Array<
     const Neighbor& y = crowded[next++];
     if (!nearest.is_present(y.id) || nearest.nearest_but(y.id, y.id).squared_distance > y.squared_distance)
       continue;
-    const Array<std::pair<Index, Neighbor> > moves = nearest.cell_without(y.id);
-    if (std::all_of(moves.begin(), moves.end(),
-                    [&](const std::pair<Index, Neighbor>& m) { return m.second.squared_distance < greatest; }))
+    const Array<std::pair<Index, Index> > moves = nearest.cell_without(y.id);
+    if (std::all_of(moves.begin(), moves.end(), [&](const std::pair<Index, Index>& m) {
+          return squared_distance(points.points[m.first], points.points[m.second]) < greatest;
+        }))
     {
       nearest.make_absent(y.id, moves);
       return y.id;
@@ -272,8 +298,13 @@ void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& presen
       sites.push_back(i);
   if (sites.size() < 2 || sites.size() == points.size() || swaps == 0)
     return;
-  const Array<Neighbor> crowded = present_by_crowding<ConcurrencyTag>(points, sites);
-  Nearest_present nearest(points, present, sites, ConcurrencyTag());
+  // the present points' own tree serves the first searches, and goes
+  Array<Neighbor> crowded;
+  Nearest_present nearest = [&] {
+    const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
+    crowded = present_by_crowding<ConcurrencyTag>(points, sites, tree);
+    return Nearest_present(points, present, tree, 64 * swaps, ConcurrencyTag());
+  }();
   std::size_t next = 0;
   for (std::size_t swap = 0; swap < swaps; ++swap)
   {
@@ -281,7 +312,7 @@ void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& presen
     if (!x)
       return;
     nearest.make_present(*x);
-    if (!next_to_leave(nearest, crowded, next))
+    if (!next_to_leave(points, nearest, crowded, next))
     {
       nearest.make_absent(*x, nearest.cell_without(*x));
       return;

@@ -160,6 +160,9 @@ public:
     m_removed[p] = 1;
   }
 
+  // Brings a removed `p` back into later searches.
+  void restore(Index p) { m_removed[p] = 0; }
+
 private:
   // Node `node` holds m_order[first, beyond), the tree's indices in
   // [low, high), which splits where the kd order splits it, in halves; when
