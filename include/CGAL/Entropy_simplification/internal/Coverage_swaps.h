@@ -54,7 +54,8 @@ public:
   template <typename ConcurrencyTag>
   Nearest_present(const Indexed_points& points, Array<char>& present, const Point_tree& sites, std::size_t heap_size,
                   ConcurrencyTag)
-    : m_points(points), m_present(present), m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
+    : m_points(points), m_present(present),
+      m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
              ConcurrencyTag()),
       m_site(points.size()), m_first_member(points.size(), none), m_next_member(points.size(), none),
       m_heap_size(heap_size)
@@ -201,9 +202,16 @@ private:
     m_far.clear();
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (!m_present[i] && nearest(i).squared_distance >= m_threshold)
-        m_far.push_back(Neighbor{ nearest(i).squared_distance, m_points.input_position[i], i });
+        m_far.push_back(far_entry(i));
     std::make_heap(m_far.begin(), m_far.end(), below);
     m_heap_size *= 2;
+  }
+
+  // The heap's entry of `p`: its squared distance to its nearest present
+  // point, its own input position, itself.
+  Neighbor far_entry(Index p) const
+  {
+    return Neighbor{ nearest(p).squared_distance, m_points.input_position[p], p };
   }
 
   // `p` joins the cell of `site`, its new nearest present point.
@@ -217,9 +225,7 @@ private:
     link(p);
     if (!m_present[p])
     {
-      m_far.push_back(nearest(p));
-      m_far.back().input_position = m_points.input_position[p];
-      m_far.back().id = p;
+      m_far.push_back(far_entry(p));
       std::push_heap(m_far.begin(), m_far.end(), below);
     }
   }
