@@ -321,17 +321,22 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
 
 namespace {
 
-// The points present after the library's coverage swaps, by input position.
+// The points present after the library's coverage swaps, by input position,
+// each point's `scale` given by input position.
 template <typename ConcurrencyTag>
 std::vector<bool> swapped_by_the_library(const std::vector<Point>& points, const std::vector<bool>& present,
-                                         std::size_t swaps)
+                                         std::size_t swaps, const std::vector<double>& scale)
 {
   const ESI::Indexed_points indexed =
     ESI::sort_spatially<ConcurrencyTag>(ESI::Array<ESI::Working_point>(points.begin(), points.end()));
   ESI::Array<char> flags(points.size());
+  ESI::Array<double> scale_of(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
+  {
     flags[i] = present[indexed.input_position[i]];
-  ESI::swap_farthest_for_crowded<ConcurrencyTag>(indexed, flags, swaps);
+    scale_of[i] = scale[indexed.input_position[i]];
+  }
+  ESI::swap_farthest_for_crowded<ConcurrencyTag>(indexed, flags, swaps, scale_of);
   std::vector<bool> result(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     result[indexed.input_position[i]] = flags[i] != 0;
@@ -353,25 +358,33 @@ TEST_CASE("Default mode: the coverage swaps equal the reference's, and never wid
 {
   test_parallel::require_tbb();
   // Present points from a plain thinning, clustered so that gaps and crowds
-  // both occur: every third point, and every point of a dense patch.
+  // both occur: every third point, and every point of a dense patch. The
+  // scales, as the field's, are rounded to 30 bits; uneven, they reorder
+  // the crowded points.
   for (const test_clouds::Cloud& cloud : { fold(3000, 0.003, 21), test_clouds::wavy_surface(2500, 0.01, 22) })
-    for (std::size_t swaps : { std::size_t(1), std::size_t(7), std::size_t(60) })
-    {
-      const std::vector<Point>& points = cloud.points;
-      std::vector<bool> present(points.size());
-      for (std::size_t p = 0; p < points.size(); ++p)
-        present[p] = p % 3 == 0 || (p % 7 == 1 && points[p].x() < points[0].x());
-      INFO(cloud.name << ", " << swaps << " swaps");
-      std::vector<bool> expected = present;
-      reference::swap_farthest_for_crowded(points, expected, swaps);
-      CHECK(expected != present);
-      CHECK(std::count(expected.begin(), expected.end(), true) == std::count(present.begin(), present.end(), true));
-      CHECK(greatest_squared_distance(points, expected) <= greatest_squared_distance(points, present));
-      CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps) == expected);
-      CHECK(test_parallel::on_two_threads_or_more([&] {
-              return swapped_by_the_library<test_parallel::Parallel_tag>(points, present, swaps);
-            }) == expected);
-    }
+    for (bool even_scales : { true, false })
+      for (std::size_t swaps : { std::size_t(1), std::size_t(7), std::size_t(60) })
+      {
+        const std::vector<Point>& points = cloud.points;
+        std::vector<bool> present(points.size());
+        std::vector<double> scale(points.size(), 1.);
+        for (std::size_t p = 0; p < points.size(); ++p)
+        {
+          present[p] = p % 3 == 0 || (p % 7 == 1 && points[p].x() < points[0].x());
+          if (!even_scales)
+            scale[p] = 0.5 + double(p % 5) / 8.;
+        }
+        INFO(cloud.name << ", " << (even_scales ? "even" : "uneven") << " scales, " << swaps << " swaps");
+        std::vector<bool> expected = present;
+        reference::swap_farthest_for_crowded(points, expected, swaps, scale);
+        CHECK(expected != present);
+        CHECK(std::count(expected.begin(), expected.end(), true) == std::count(present.begin(), present.end(), true));
+        CHECK(greatest_squared_distance(points, expected) <= greatest_squared_distance(points, present));
+        CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps, scale) == expected);
+        CHECK(test_parallel::on_two_threads_or_more([&] {
+                return swapped_by_the_library<test_parallel::Parallel_tag>(points, present, swaps, scale);
+              }) == expected);
+      }
 }
 
 TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[default][reference][coverage]")
@@ -381,10 +394,11 @@ TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[
   // as far as the farthest then is (3, at 1), so nothing changes.
   const std::vector<Point> line = { Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(3, 0, 0), Point(4, 0, 0) };
   const std::vector<bool> present = { true, false, true, false, true };
+  const std::vector<double> unit(6, 1.);
   std::vector<bool> expected = present;
-  reference::swap_farthest_for_crowded(line, expected, 3);
+  reference::swap_farthest_for_crowded(line, expected, 3, unit);
   CHECK(expected == present);
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, present, 3) == present);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, present, 3, unit) == present);
   // Two crowded points (0 and 1) and a gap: the farthest point (5) comes in
   // and the most crowded (0) leaves for it. A second swap would bring 4 in,
   // but 1 is no longer crowded and 3 cannot leave: the swaps end there.
@@ -392,17 +406,27 @@ TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[
                                    Point(3, 0, 0), Point(4, 0, 0),   Point(5, 0, 0) };
   const std::vector<bool> before = { true, true, false, true, false, false };
   const std::vector<bool> after = { false, true, false, true, false, true };
+  // With 0's scale halved, 0 is four times less crowded than 1, which leaves
+  // instead (2 then lies at 0.4 from 0). A second swap would bring 4 in, but
+  // 0 is now less crowded than it was, and 3 cannot leave.
+  std::vector<double> halved = unit;
+  halved[0] = 0.5;
+  const std::vector<bool> after_halved = { true, false, false, true, false, true };
   for (std::size_t swaps : { 1, 2 })
   {
     std::vector<bool> swapped = before;
-    reference::swap_farthest_for_crowded(gap, swapped, swaps);
+    reference::swap_farthest_for_crowded(gap, swapped, swaps, unit);
     CHECK(swapped == after);
-    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps) == after);
+    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, unit) == after);
+    swapped = before;
+    reference::swap_farthest_for_crowded(gap, swapped, swaps, halved);
+    CHECK(swapped == after_halved);
+    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, halved) == after_halved);
   }
   // Every point present, or a single one: no swap.
   const std::vector<bool> all(5, true), one = { false, false, true, false, false };
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, all, 3) == all);
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, one, 3) == one);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, all, 3, unit) == all);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, one, 3, unit) == one);
 }
 
 namespace {

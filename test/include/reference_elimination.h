@@ -644,23 +644,31 @@ inline double squared_distance_to_present(const std::vector<Point>& points, cons
   return squared_distance(points[p], points[nearest_present(points, present, p)]);
 }
 
+// How crowded present point `p` is: the squared distance to its nearest
+// other present point divided by the square of its scale.
+inline double crowding_of(const std::vector<Point>& points, const std::vector<bool>& present,
+                          const std::vector<double>& scale, std::size_t p)
+{
+  return nearest_present_but(points, present, p, p).first / (scale[p] * scale[p]);
+}
+
 // The coverage swaps, up to `swaps` times: the point farthest from the
 // present points (ties: the lowest position) becomes present. Then the
-// present points of the start are tried in the order of their squared
-// distance, at the start, to their nearest other present point (ties: the
-// lowest position), each once over all the swaps: the first one still
-// present, no farther from its nearest other present point than at the
-// start, and such that each point whose nearest present point it is would be
-// nearer its nearest present point other than it than the farthest point
-// now is from its own, is no longer present. When none is, the farthest
-// point is not present either, and the swaps end.
-inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vector<bool>& present, std::size_t swaps)
+// present points of the start are tried in the order of their crowding at
+// the start (ties: the lowest position), each once over all the swaps: the
+// first one still present, no less crowded than at the start, and such that
+// each point whose nearest present point it is would be nearer its nearest
+// present point other than it than the farthest point now is from its own,
+// is no longer present. When none is, the farthest point is not present
+// either, and the swaps end.
+inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vector<bool>& present, std::size_t swaps,
+                                      const std::vector<double>& scale)
 {
   const std::size_t n = points.size();
   std::vector<Neighbor> crowded;
   for (std::size_t p = 0; p < n; ++p)
     if (present[p])
-      crowded.emplace_back(nearest_present_but(points, present, p, p).first, p);
+      crowded.emplace_back(crowding_of(points, present, scale, p), p);
   if (crowded.size() < 2 || crowded.size() == n)
     return;
   std::sort(crowded.begin(), crowded.end());
@@ -685,7 +693,7 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
     while (tried < crowded.size() && !left)
     {
       const auto [crowding, y] = crowded[tried++];
-      if (!present[y] || nearest_present_but(points, present, y, y).first > crowding)
+      if (!present[y] || crowding_of(points, present, scale, y) > crowding)
         continue;
       bool stays_near = true;
       for (std::size_t p = 0; p < n; ++p)
@@ -708,7 +716,7 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
 
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
-// relocation and the coverage swaps, one per thousand kept points rounded
+// relocation and the coverage swaps, one per hundred kept points rounded
 // up; the j-th point the relocation drops takes the place, in the
 // removal order, of the j-th point it brings in, both in input order. The
 // `terms` switched off are left out.
@@ -725,7 +733,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   for (int iteration = 0; iteration < (terms.relocation ? 2 : 0); ++iteration)
     relocated = relocation_step(points, relocated, terms);
   if (terms.coverage_swaps)
-    swap_farthest_for_crowded(points, relocated, (target + 999) / 1000);
+    swap_farthest_for_crowded(points, relocated, (target + 99) / 100, field.scale);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {

@@ -190,13 +190,14 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
 // A relaxation in Lloyd's manner restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
 // cell keeps its median (see cell_medians, and `terms`); then, with
-// `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count). The
-// count does not change.
+// `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count), each
+// point's crowding measured against its `scale`. The count does not change.
 // Returns the pairs (point no longer present, point present instead), both
 // taken in input order.
 template <typename ConcurrencyTag>
 Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points, Array<char>& present,
-                                                      int iterations, const Default_mode_terms& terms)
+                                                      int iterations, const Default_mode_terms& terms,
+                                                      const Array<double>& scale)
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
@@ -204,7 +205,7 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
   if (terms.coverage_swaps)
     swap_farthest_for_crowded<ConcurrencyTag>(
-      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1)))));
+      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1)))), scale);
 
   Array<Index> gone, come;
   for (Index i : by_input)

@@ -77,17 +77,19 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
   return present;
 }
 
-// The relocation that ends the default mode, with the `terms` switched on.
-// A relocated point takes the place, in the removal order, of the point
-// that replaces it.
+// The relocation that ends the default mode, with the `terms` switched on,
+// on the `scale` of each point. A relocated point takes the place, in the
+// removal order, of the point that replaces it.
 template <typename ConcurrencyTag>
-void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms)
+void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
+              const Array<double>& scale)
 {
   Array<char> present = present_after(run, points.size());
   Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
-  for (const auto& swap : relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms))
+  for (const auto& swap : relocate_within_input<ConcurrencyTag>(
+         points, present, terms.relocation ? relocation_iterations : 0, terms, scale))
     run.removed[rank[swap.second]] = swap.first;
 }
 
@@ -188,7 +190,7 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
   if (!run.initialized)
     return std::nullopt;
   if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    relocate<ConcurrencyTag>(indexed, run, terms);
+    relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
   if (through && !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, callback)))
     return std::nullopt;
   return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
