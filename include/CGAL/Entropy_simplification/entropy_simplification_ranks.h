@@ -110,10 +110,10 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
 
    Without a level, every boundary is thus relocated: on the benchmark's
    inputs, a prefix's mean distance to the input is at most 1.05 times that
-   of a direct call to its size from 10% to 50% of the points, up to 1.053
-   times at 5% and 1.077 times at 1% (the user manual gives the figures).
+   of a direct call to its size from 10% to 50% of the points, up to 1.052
+   times at 5% and 1.074 times at 1% (the user manual gives the figures).
    With a level, the prefixes longer than `L` are not relocated, and are up
-   to 1.22 times worse. The whole order costs about one direct call to 1% of
+   to 1.26 times worse. The whole order costs about one direct call to 1% of
    the points (0.93 to 1.13 times, measured).
 
    Coincident points are ranked last: their first copy in input order takes

@@ -27,21 +27,22 @@ namespace internal {
 
 // The swaps a run keeping `kept` points makes: one per hundred kept points,
 // rounded up. The widest gaps set the Hausdorff distance, the narrower ones
-// weigh on the mean distance; each swap closes one and takes a point from
-// where the kept points crowd, features included. Against one per thousand,
-// on issue 12's cells (scratch): the Hausdorff distance 11 to 12% lower, the
-// mean distance 0.3 to 0.6% lower, fandisk's edge share 0.6% and the ball's
+// weigh on the mean distance; each swap closes one, and takes a point from
+// the most crowded (see crowding). Against one per thousand, on issue 12's
+// cells (scratch): the Hausdorff distance 11 to 12% lower, the mean
+// distance 0.3 to 0.6% lower, fandisk's edge share 0.6% and the ball's
 // 1.2% lower. Three per hundred lowered the mean distance about twice as
-// much, for shares 1.4 to 3.8% lower, and a ranking's prefixes, which get no swaps, fell
-// behind the direct calls: on radar at 50%, 1.068 times their mean distance.
+// much, for shares 1.4 to 3.8% lower, and a ranking's prefixes, which get
+// no swaps, fell behind the direct calls: on radar at 50%, 1.068 times
+// their mean distance.
 inline std::size_t coverage_swap_count(std::size_t kept) { return (kept + 99) / 100; }
 
-// How crowded a present point is: the squared distance to its nearest other
-// present point over the square of its scale, the factor of its
-// interaction radius. The elimination made the features dense on purpose;
-// measured against the spacing it asked for, a point on a feature is no
-// more crowded than one on a flat region (the edge share falls by 0.6%
-// rather than 3.3% at ten swaps per thousand).
+// How crowded a present point is, the smaller the more: the squared
+// distance to its nearest other present point over the square of its
+// scale, the factor of its interaction radius. The elimination made the
+// features dense on purpose; measured against the spacing it asked for, a
+// point on a feature is no more crowded than one on a flat region (the
+// edge share falls by 0.6% rather than 3.3% at ten swaps per thousand).
 inline double crowding(double squared_distance, double scale) { return squared_distance / (scale * scale); }
 
 // Each point's nearest present point (ties by input position), its cell,
