@@ -714,13 +714,9 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
 // The default mode
 // ----------------------------------------------------------------------------
 
-// The coverage swaps of a run that keeps `kept` points: three per hundred,
-// rounded up.
-inline std::size_t coverage_swaps_keeping(std::size_t kept) { return (3 * kept + 99) / 100; }
-
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
-// relocation and the coverage swaps, three per hundred kept points rounded
+// relocation and the coverage swaps, one per hundred kept points rounded
 // up; the j-th point the relocation drops takes the place, in the
 // removal order, of the j-th point it brings in, both in input order. The
 // `terms` switched off are left out.
@@ -737,7 +733,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   for (int iteration = 0; iteration < (terms.relocation ? 2 : 0); ++iteration)
     relocated = relocation_step(points, relocated, terms);
   if (terms.coverage_swaps)
-    swap_farthest_for_crowded(points, relocated, coverage_swaps_keeping(target), field.scale);
+    swap_farthest_for_crowded(points, relocated, (target + 99) / 100, field.scale);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {
@@ -786,47 +782,7 @@ inline std::vector<std::size_t> cells_of_present(const std::vector<Point>& point
   return label;
 }
 
-// At a boundary, first: the coverage swaps on a cloud of the present points
-// and those the stage removed alone, as many as a run keeping the present
-// points makes; the j-th point that leaves takes the place, in
-// `stage_removed`, of the j-th point that comes, both in input order.
-inline void swap_at_boundary(const std::vector<Point>& points, const std::vector<double>& scale,
-                             std::vector<bool>& present, std::vector<std::size_t>& stage_removed)
-{
-  std::vector<bool> in_level_above = present;
-  for (std::size_t r : stage_removed)
-    in_level_above[r] = true;
-  std::vector<std::size_t> position;
-  std::vector<Point> cloud;
-  std::vector<bool> cloud_present;
-  std::vector<double> cloud_scale;
-  for (std::size_t p = 0; p < points.size(); ++p)
-    if (in_level_above[p])
-    {
-      position.push_back(p);
-      cloud.push_back(points[p]);
-      cloud_present.push_back(present[p]);
-      cloud_scale.push_back(scale[p]);
-    }
-  const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), true));
-  swap_farthest_for_crowded(cloud, cloud_present, coverage_swaps_keeping(kept), cloud_scale);
-  std::vector<std::size_t> gone, come;
-  for (std::size_t c = 0; c < cloud.size(); ++c)
-  {
-    if (present[position[c]] && !cloud_present[c])
-      gone.push_back(position[c]);
-    if (!present[position[c]] && cloud_present[c])
-      come.push_back(position[c]);
-  }
-  for (std::size_t j = 0; j < gone.size(); ++j)
-  {
-    present[gone[j]] = false;
-    present[come[j]] = true;
-    *std::find(stage_removed.begin(), stage_removed.end(), come[j]) = gone[j];
-  }
-}
-
-// At a boundary, then: each point the stage removed (in removal order) brings its
+// At a boundary: each point the stage removed (in removal order) brings its
 // cell into that of the present point nearest it among those of nonzero
 // weight, if any; then each cell with a present point keeps, among that
 // point and the stage's removed points of the cell, the one whose distances
@@ -875,7 +831,7 @@ inline void relocate_boundary(const std::vector<Point>& points, const std::vecto
 }
 
 // The removal order of the `present` points down to one, in stages that end
-// at the level boundaries, each swapped and relocated.
+// at the level boundaries, each relocated.
 inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>& points, const Field& field,
                                                         std::vector<bool> present)
 {
@@ -896,10 +852,7 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
       stage_removed.push_back(p);
     }
     if (stage.target > 1)
-    {
-      swap_at_boundary(points, field.scale, present, stage_removed);
       relocate_boundary(points, weights, present, label, stage_removed);
-    }
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
   }
   return removed;

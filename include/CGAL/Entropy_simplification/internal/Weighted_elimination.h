@@ -9,7 +9,6 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
-#include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
@@ -25,7 +24,6 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 
 namespace CGAL {
@@ -534,13 +532,12 @@ private:
     return nearest;
   }
 
-  // At a level boundary: the coverage swaps among the points of the level
-  // above, then the points removed in the stage join the cells of their
-  // nearest present neighbours, and each cell's point moves to its median.
+  // At a level boundary: the points removed in the stage join the cells of
+  // their nearest present neighbours, and each cell's point moves to its
+  // median.
   template <typename ConcurrencyTag>
   void relocate_level(Array<Index>& stage_removed)
   {
-    swap_within_level_above<ConcurrencyTag>(stage_removed);
     Array<std::optional<Index> > site(stage_removed.size());
     for_each_index<ConcurrencyTag>(
       stage_removed.size(), [&](std::size_t r) { site[r] = nearest_present_neighbor(stage_removed[r]); },
@@ -556,35 +553,6 @@ private:
     m_listed.insert(m_listed.end(), arrived.begin(), arrived.end());
     std::sort(m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
     std::inplace_merge(m_listed.begin(), m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
-  }
-
-  // The coverage swaps of a level boundary, among the present points and
-  // those the stage removed, as many as a direct call keeping the present
-  // points makes: the direct calls' swaps would leave the ranking's
-  // prefixes behind them otherwise. A point that leaves takes the place, in
-  // `stage_removed`, of the point that comes.
-  template <typename ConcurrencyTag>
-  void swap_within_level_above(Array<Index>& stage_removed)
-  {
-    list_present();
-    const std::size_t kept = m_listed.size();
-    Array<Index> level_above = m_listed;
-    level_above.insert(level_above.end(), stage_removed.begin(), stage_removed.end());
-    std::sort(level_above.begin(), level_above.end());
-    const Array<std::pair<Index, Index> > swaps =
-      swap_within<ConcurrencyTag>(m_points, level_above, m_present, coverage_swap_count(kept), m_field.scale);
-    if (swaps.empty())
-      return;
-    std::unordered_map<Index, Index> leaving_for;
-    for (const auto& [gone, come] : swaps)
-      leaving_for.emplace(come, gone);
-    for (Index& r : stage_removed)
-      if (const auto found = leaving_for.find(r); found != leaving_for.end())
-        r = found->second;
-    m_listed.clear();
-    for (Index i : level_above)
-      if (is_present(i))
-        m_listed.push_back(i);
   }
 
   std::int64_t weight(Index a, Index b, const Elimination_stage& stage) const
