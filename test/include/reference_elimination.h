@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -57,6 +58,11 @@ struct Terms
 // Every point is named by its input position; ties in distance go to the
 // lowest one, as the manual defines every order of the package.
 using Neighbor = std::pair<double, std::size_t>; // (squared distance, input position)
+
+// Whether a point may be another's nearest present point: among all of
+// them, or (at a ranking's level boundary) among those of nonzero weight.
+using Adjacency = std::function<bool(std::size_t, std::size_t)>;
+inline const Adjacency everywhere = [](std::size_t, std::size_t) { return true; };
 
 inline double squared_distance(const Point& a, const Point& b)
 {
@@ -535,13 +541,14 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
 // ----------------------------------------------------------------------------
 
 // The present point nearest `points[p]`, itself when present.
-inline std::size_t nearest_present(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t p)
+inline std::size_t nearest_present(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t p,
+                                   const Adjacency& adjacent = everywhere)
 {
   if (present[p])
     return p;
   Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
   for (std::size_t q = 0; q < points.size(); ++q)
-    if (present[q])
+    if (present[q] && adjacent(p, q))
       nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[q]), q });
   return nearest.second;
 }
@@ -629,27 +636,29 @@ inline std::vector<bool> relocation_step(const std::vector<Point>& points, const
 // The present point nearest `points[p]` other than `p` and `excluded`, at
 // an infinite distance when there is none.
 inline Neighbor nearest_present_but(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t p,
-                                    std::size_t excluded)
+                                    std::size_t excluded, const Adjacency& adjacent)
 {
   Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
   for (std::size_t q = 0; q < points.size(); ++q)
-    if (present[q] && q != p && q != excluded)
+    if (present[q] && q != p && q != excluded && adjacent(p, q))
       nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[q]), q });
   return nearest;
 }
 
 inline double squared_distance_to_present(const std::vector<Point>& points, const std::vector<bool>& present,
-                                          std::size_t p)
+                                          std::size_t p, const Adjacency& adjacent = everywhere)
 {
-  return squared_distance(points[p], points[nearest_present(points, present, p)]);
+  const std::size_t nearest = nearest_present(points, present, p, adjacent);
+  return nearest == points.size() ? std::numeric_limits<double>::infinity()
+                                  : squared_distance(points[p], points[nearest]);
 }
 
 // How crowded present point `p` is: the squared distance to its nearest
 // other present point divided by the square of its scale.
 inline double crowding_of(const std::vector<Point>& points, const std::vector<bool>& present,
-                          const std::vector<double>& scale, std::size_t p)
+                          const std::vector<double>& scale, std::size_t p, const Adjacency& adjacent)
 {
-  return nearest_present_but(points, present, p, p).first / (scale[p] * scale[p]);
+  return nearest_present_but(points, present, p, p, adjacent).first / (scale[p] * scale[p]);
 }
 
 // The coverage swaps, up to `swaps` times: the point farthest from the
@@ -660,15 +669,16 @@ inline double crowding_of(const std::vector<Point>& points, const std::vector<bo
 // each point whose nearest present point it is would be nearer its nearest
 // present point other than it than the farthest point now is from its own,
 // is no longer present. When none is, the farthest point is not present
-// either, and the swaps end.
+// either, and the swaps end. A point's present points are those `adjacent`
+// to it; one with none is at an infinite distance from them.
 inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vector<bool>& present, std::size_t swaps,
-                                      const std::vector<double>& scale)
+                                      const std::vector<double>& scale, const Adjacency& adjacent = everywhere)
 {
   const std::size_t n = points.size();
   std::vector<Neighbor> crowded;
   for (std::size_t p = 0; p < n; ++p)
     if (present[p])
-      crowded.emplace_back(crowding_of(points, present, scale, p), p);
+      crowded.emplace_back(crowding_of(points, present, scale, p, adjacent), p);
   if (crowded.size() < 2 || crowded.size() == n)
     return;
   std::sort(crowded.begin(), crowded.end());
@@ -678,26 +688,27 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
     std::size_t farthest = n;
     double farthest_distance = -1.;
     for (std::size_t p = 0; p < n; ++p)
-      if (!present[p] && squared_distance_to_present(points, present, p) > farthest_distance)
+      if (!present[p] && squared_distance_to_present(points, present, p, adjacent) > farthest_distance)
       {
         farthest = p;
-        farthest_distance = squared_distance_to_present(points, present, p);
+        farthest_distance = squared_distance_to_present(points, present, p, adjacent);
       }
     if (farthest == n)
       return;
     present[farthest] = true;
     double greatest = 0.;
     for (std::size_t p = 0; p < n; ++p)
-      greatest = (std::max)(greatest, squared_distance_to_present(points, present, p));
+      greatest = (std::max)(greatest, squared_distance_to_present(points, present, p, adjacent));
     bool left = false;
     while (tried < crowded.size() && !left)
     {
       const auto [crowding, y] = crowded[tried++];
-      if (!present[y] || crowding_of(points, present, scale, y) > crowding)
+      if (!present[y] || crowding_of(points, present, scale, y, adjacent) > crowding)
         continue;
       bool stays_near = true;
       for (std::size_t p = 0; p < n; ++p)
-        if (nearest_present(points, present, p) == y && !(nearest_present_but(points, present, p, y).first < greatest))
+        if (nearest_present(points, present, p, adjacent) == y &&
+            !(nearest_present_but(points, present, p, y, adjacent).first < greatest))
           stays_near = false;
       present[y] = !stays_near;
       left = stays_near;
@@ -714,9 +725,13 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
 // The default mode
 // ----------------------------------------------------------------------------
 
+// The coverage swaps of a run that keeps `kept` points: three per hundred,
+// rounded up.
+inline std::size_t coverage_swaps_keeping(std::size_t kept) { return (3 * kept + 99) / 100; }
+
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
-// relocation and the coverage swaps, one per hundred kept points rounded
+// relocation and the coverage swaps, three per hundred kept points rounded
 // up; the j-th point the relocation drops takes the place, in the
 // removal order, of the j-th point it brings in, both in input order. The
 // `terms` switched off are left out.
@@ -733,7 +748,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   for (int iteration = 0; iteration < (terms.relocation ? 2 : 0); ++iteration)
     relocated = relocation_step(points, relocated, terms);
   if (terms.coverage_swaps)
-    swap_farthest_for_crowded(points, relocated, (target + 99) / 100, field.scale);
+    swap_farthest_for_crowded(points, relocated, coverage_swaps_keeping(target), field.scale);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {
@@ -782,7 +797,51 @@ inline std::vector<std::size_t> cells_of_present(const std::vector<Point>& point
   return label;
 }
 
-// At a boundary: each point the stage removed (in removal order) brings its
+// At a boundary, first: the coverage swaps on a cloud of the present points
+// and those the stage removed alone, as many as a run keeping the present
+// points makes, a point's present points being those of nonzero weight in
+// the stage; the j-th point that leaves takes the place, in
+// `stage_removed`, of the j-th point that comes, both in input order.
+inline void swap_at_boundary(const std::vector<Point>& points, const std::vector<double>& scale,
+                             const std::vector<std::int64_t>& weights, std::vector<bool>& present,
+                             std::vector<std::size_t>& stage_removed)
+{
+  const std::size_t n = points.size();
+  std::vector<bool> in_level_above = present;
+  for (std::size_t r : stage_removed)
+    in_level_above[r] = true;
+  std::vector<std::size_t> position;
+  std::vector<Point> cloud;
+  std::vector<bool> cloud_present;
+  std::vector<double> cloud_scale;
+  for (std::size_t p = 0; p < n; ++p)
+    if (in_level_above[p])
+    {
+      position.push_back(p);
+      cloud.push_back(points[p]);
+      cloud_present.push_back(present[p]);
+      cloud_scale.push_back(scale[p]);
+    }
+  const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), true));
+  swap_farthest_for_crowded(cloud, cloud_present, coverage_swaps_keeping(kept), cloud_scale,
+                            [&](std::size_t a, std::size_t b) { return weights[position[a] * n + position[b]] != 0; });
+  std::vector<std::size_t> gone, come;
+  for (std::size_t c = 0; c < cloud.size(); ++c)
+  {
+    if (present[position[c]] && !cloud_present[c])
+      gone.push_back(position[c]);
+    if (!present[position[c]] && cloud_present[c])
+      come.push_back(position[c]);
+  }
+  for (std::size_t j = 0; j < gone.size(); ++j)
+  {
+    present[gone[j]] = false;
+    present[come[j]] = true;
+    *std::find(stage_removed.begin(), stage_removed.end(), come[j]) = gone[j];
+  }
+}
+
+// At a boundary, then: each point the stage removed (in removal order) brings its
 // cell into that of the present point nearest it among those of nonzero
 // weight, if any; then each cell with a present point keeps, among that
 // point and the stage's removed points of the cell, the one whose distances
@@ -831,7 +890,7 @@ inline void relocate_boundary(const std::vector<Point>& points, const std::vecto
 }
 
 // The removal order of the `present` points down to one, in stages that end
-// at the level boundaries, each relocated.
+// at the level boundaries, each swapped and relocated.
 inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>& points, const Field& field,
                                                         std::vector<bool> present)
 {
@@ -852,7 +911,10 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
       stage_removed.push_back(p);
     }
     if (stage.target > 1)
+    {
+      swap_at_boundary(points, field.scale, weights, present, stage_removed);
       relocate_boundary(points, weights, present, label, stage_removed);
+    }
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
   }
   return removed;

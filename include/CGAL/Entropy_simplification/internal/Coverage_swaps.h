@@ -25,17 +25,16 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// The swaps a run keeping `kept` points makes: one per hundred kept points,
-// rounded up. The widest gaps set the Hausdorff distance, the narrower ones
-// weigh on the mean distance; each swap closes one, and takes a point from
-// the most crowded (see crowding). Against one per thousand, on issue 12's
-// cells (scratch): the Hausdorff distance 11 to 12% lower, the mean
-// distance 0.3 to 0.6% lower, fandisk's edge share 0.6% and the ball's
-// 1.2% lower. Three per hundred lowered the mean distance about twice as
-// much, for shares 1.4 to 3.8% lower, and a ranking's prefixes, which get
-// no swaps, fell behind the direct calls: on radar at 50%, 1.068 times
-// their mean distance.
-inline std::size_t coverage_swap_count(std::size_t kept) { return (kept + 99) / 100; }
+// The swaps a run keeping `kept` points makes: three per hundred kept
+// points, rounded up. The widest gaps set the Hausdorff distance, the
+// narrower ones weigh on the mean distance; each swap closes one, and takes
+// a point from the most crowded (see crowding). Against one per hundred,
+// on issue 12's cells (scratch): the Hausdorff distance 6 to 9% and the
+// mean distance 0.4 to 0.5% lower, the point-to-plane error 0.5 to 1.5%
+// higher, fandisk's edge share 1.4% lower. Beyond one per hundred, a
+// ranking's prefixes fell behind the direct calls until its level
+// boundaries were swapped too (see swap_among_neighbors).
+inline std::size_t coverage_swap_count(std::size_t kept) { return (3 * kept + 99) / 100; }
 
 // How crowded a present point is, the smaller the more: the squared
 // distance to its nearest other present point over the square of its
@@ -45,17 +44,155 @@ inline std::size_t coverage_swap_count(std::size_t kept) { return (kept + 99) / 
 // edge share falls by 0.6% rather than 3.3% at ten swaps per thousand).
 inline double crowding(double squared_distance, double scale) { return squared_distance / (scale * scale); }
 
-// Each point's nearest present point (ties by input position), its cell,
-// and the points not present farthest from theirs, kept up to date as
-// points are made present or not. The searches run in a tree of every
-// point, those not present left out. The farthest points are a heap of the
-// points beyond a threshold and of every change since it was set, the
-// outdated entries skipped when they come to the top; when none beyond the
-// threshold is left, it is set again lower.
+// The farthest points the swaps' heap holds at first (see Nearest_present):
+// a few per swap, as each swap takes one and outdates those whose present
+// point it moves; a refill, when they run out, costs a pass over the points.
+inline std::size_t heap_size(std::size_t swaps) { return 4 * swaps + 64; }
+
+// No point: the site of a point that has no present point.
+constexpr Index none_index = Index(-1);
+
+// The nearest present point of a point that has none, at an infinite distance.
+inline Neighbor no_neighbor() { return Neighbor{ std::numeric_limits<double>::infinity(), none_index, none_index }; }
+
+// The searches of a direct call's swaps, where every point takes part: the
+// present points, in a tree of every point, those not present left out.
+class Tree_search
+{
+public:
+  template <typename ConcurrencyTag>
+  Tree_search(const Indexed_points& points, const Array<char>& present, ConcurrencyTag)
+    : m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
+             ConcurrencyTag()),
+      m_tree_size(points.size())
+  {
+    for (Index i = 0; i < Index(points.size()); ++i)
+      if (!present[i])
+        m_tree.remove(i);
+  }
+
+  template <typename Function>
+  void for_each_taking_part(const Function& f) const
+  {
+    for (Index i = 0; i < Index(m_tree_size); ++i)
+      f(i);
+  }
+
+  // The present point nearest `q` other than `q` and `excluded`, at an
+  // infinite distance when there is none.
+  Neighbor nearest_but(Index q, Index excluded) const
+  {
+    thread_local Array<Neighbor> best;
+    m_tree.nearest(q, 2, best);
+    for (const Neighbor& b : best)
+      if (b.id != excluded && b.id != q)
+        return b;
+    return no_neighbor();
+  }
+
+  // The points that may be nearer `x` than their present points, before `x`
+  // is present, `x` being the point farthest from the present points, at
+  // `squared_distance` from its own: none is farther from its own, so they
+  // lie in the cells of the present points within twice that distance.
+  template <typename Members>
+  Array<Index> may_move_to(Index x, double squared_distance, const Members& members) const
+  {
+    Array<Index> result;
+    for (Index s : present_within(x, 4. * squared_distance * (1. + 1e-9)))
+      for (Index p : members(s))
+        result.push_back(p);
+    return result;
+  }
+
+  void made_present(Index x) { m_tree.restore(x); }
+  void made_absent(Index y) { m_tree.remove(y); }
+
+private:
+  // The present points within `squared_reach` of `q`, other than `q`.
+  Array<Index> present_within(Index q, double squared_reach) const
+  {
+    Array<Neighbor> near;
+    for (std::size_t count = 16;; count *= 4)
+    {
+      m_tree.nearest(q, count, near);
+      if (near.size() < count || near.back().squared_distance > squared_reach)
+        break;
+    }
+    Array<Index> result;
+    for (const Neighbor& s : near)
+      if (s.squared_distance <= squared_reach)
+        result.push_back(s.id);
+    return result;
+  }
+
+  Point_tree m_tree;
+  std::size_t m_tree_size;
+};
+
+// The searches of a ranking's swaps at a level boundary, where the points of
+// the level above take part: each one's present points are searched among
+// its neighbours in the stage that ended there (the points within its reach,
+// lists in CSR form, which hold the level above alone and are symmetric).
+// The elimination built the lists; the swaps then build no tree, which at
+// every boundary cost the whole order 1.6 to 1.7 times a direct call (see
+// the manual). A point with no present neighbour is at an infinite distance.
+class List_search
+{
+public:
+  List_search(const Indexed_points& points, const Array<char>& present, const Array<Index>& level,
+              const Array<std::size_t>& first, const Array<Index>& neighbors)
+    : m_points(points), m_present(present), m_level(level), m_first(first), m_neighbors(neighbors)
+  {}
+
+  template <typename Function>
+  void for_each_taking_part(const Function& f) const
+  {
+    for (Index i : m_level)
+      f(i);
+  }
+
+  Neighbor nearest_but(Index q, Index excluded) const
+  {
+    Neighbor best = no_neighbor();
+    for (std::size_t e = m_first[q]; e < m_first[q + 1]; ++e)
+    {
+      const Index j = m_neighbors[e];
+      if (j != excluded && m_present[j])
+        best = (std::min)(best, Neighbor{ squared_distance(m_points.points[q], m_points.points[j]),
+                                          m_points.input_position[j], j });
+    }
+    return best;
+  }
+
+  // `x`'s neighbours, the only points whose nearest present point it can be.
+  template <typename Members>
+  Array<Index> may_move_to(Index x, double, const Members&) const
+  {
+    return Array<Index>(m_neighbors.begin() + std::ptrdiff_t(m_first[x]),
+                        m_neighbors.begin() + std::ptrdiff_t(m_first[x + 1]));
+  }
+
+  void made_present(Index) {}
+  void made_absent(Index) {}
+
+private:
+  const Indexed_points& m_points;
+  const Array<char>& m_present;
+  const Array<Index>& m_level;
+  const Array<std::size_t>& m_first;
+  const Array<Index>& m_neighbors;
+};
+
+// Each taking part point's nearest present point (ties by input position;
+// found by a `Search`, see Tree_search and List_search), its cell, and the
+// points not present farthest from theirs, kept up to date as points are
+// made present or not. The farthest points are a heap of the points beyond
+// a threshold and of every change since it was set, the outdated entries
+// skipped when they come to the top; when none beyond the threshold is
+// left, it is set again lower.
+template <typename Search>
 class Nearest_present
 {
-  static constexpr Index none = Index(-1);
-
   // the heap's order: farthest on top, then the lowest input position
   static bool below(const Neighbor& a, const Neighbor& b)
   {
@@ -64,31 +201,26 @@ class Nearest_present
   }
 
 public:
-  // `sites`, the present points, in a tree of their own for the first search.
-  template <typename ConcurrencyTag>
-  Nearest_present(const Indexed_points& points, Array<char>& present, const Point_tree& sites, std::size_t heap_size,
-                  ConcurrencyTag)
-    : m_points(points), m_present(present),
-      m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
-             ConcurrencyTag()),
-      m_site(points.size()), m_first_member(points.size(), none), m_next_member(points.size(), none),
-      m_heap_size(heap_size)
+  // `site[i]`: the present point nearest `i`, `i` itself when present, none
+  // when `i` takes no part or has no present point.
+  Nearest_present(const Indexed_points& points, Array<char>& present, Search search, Array<Index> site,
+                  std::size_t heap_size)
+    : m_points(points), m_present(present), m_search(std::move(search)), m_site(std::move(site)),
+      m_first_member(points.size(), none_index), m_next_member(points.size(), none_index), m_heap_size(heap_size)
   {
-    for_each_index<ConcurrencyTag>(
-      points.size(), [&](std::size_t i) { m_site[i] = present[i] ? Index(i) : sites.nearest_one(Index(i)); },
-      [](std::size_t) { return true; });
-    for (Index i = 0; i < Index(points.size()); ++i)
-    {
-      link(i);
-      if (!present[i])
-        m_tree.remove(i);
-    }
+    m_search.for_each_taking_part([&](Index i) {
+      if (m_site[i] != none_index)
+        link(i);
+    });
     fill_heap();
   }
 
   bool is_present(Index i) const { return m_present[i] != 0; }
 
   Neighbor nearest(Index i) const { return neighbor(i, m_site[i]); }
+  // Each point's nearest present point, as the constructor takes them, the structure then spent.
+  Array<Index> release_sites() { return std::move(m_site); }
+  Neighbor nearest_but(Index q, Index excluded) const { return m_search.nearest_but(q, excluded); }
 
   // The point farthest from the present points, or nothing when every point is present.
   std::optional<Index> farthest()
@@ -116,58 +248,45 @@ public:
     return f ? nearest(*f).squared_distance : 0.;
   }
 
-  // The present point nearest `q` other than `q` and `excluded`, at an
-  // infinite distance when there is none.
-  Neighbor nearest_but(Index q, Index excluded) const
-  {
-    thread_local Array<Neighbor> best;
-    m_tree.nearest(q, 2, best);
-    for (const Neighbor& b : best)
-      if (b.id != excluded)
-        return b;
-    return Neighbor{ std::numeric_limits<double>::infinity(), none, none };
-  }
-
-  // Makes `x` present: it takes into its cell the points nearer it than to
-  // their present points. None is farther from its own than the farthest
-  // point, so when `x` is that point they lie in the cells of the present
-  // points within twice its distance.
+  // Makes the farthest point `x` present: it takes into its cell the
+  // points nearer it than to their present points.
   void make_present(Index x)
   {
-    const double squared_reach = 4. * nearest(x).squared_distance * (1. + 1e-9);
-    const Array<Index> near = present_within(x, squared_reach);
+    const Array<Index> near =
+      m_search.may_move_to(x, nearest(x).squared_distance, [this](Index s) { return members(s); });
     m_present[x] = 1;
-    m_tree.restore(x);
+    m_search.made_present(x);
     move(x, x);
-    for (Index s : near)
-      for (Index p : members(s))
-        if (neighbor(p, x) < nearest(p))
-          move(p, x);
+    for (Index p : near)
+      if (neighbor(p, x) < nearest(p))
+        move(p, x);
   }
 
   // The members of `y`'s cell with their nearest present points other than
   // `y`: where they go once `y` is no longer present.
-  Array<std::pair<Index, Index> > cell_without(Index y) const
+  Array<std::pair<Index, Neighbor> > cell_without(Index y) const
   {
-    Array<std::pair<Index, Index> > moves;
+    Array<std::pair<Index, Neighbor> > moves;
     for (Index p : members(y))
-      moves.emplace_back(p, nearest_but(p, y).id);
+      moves.emplace_back(p, m_search.nearest_but(p, y));
     return moves;
   }
 
   // Makes `y` no longer present, the members of its cell going as
   // `moves` (cell_without(y)) says.
-  void make_absent(Index y, const Array<std::pair<Index, Index> >& moves)
+  void make_absent(Index y, const Array<std::pair<Index, Neighbor> >& moves)
   {
     m_present[y] = 0;
-    m_tree.remove(y);
+    m_search.made_absent(y);
     for (const auto& [p, site] : moves)
-      move(p, site);
+      move(p, site.id);
   }
 
 private:
   Neighbor neighbor(Index q, Index site) const
   {
+    if (site == none_index)
+      return no_neighbor();
     return Neighbor{ squared_distance(m_points.points[q], m_points.points[site]), m_points.input_position[site],
                      site };
   }
@@ -175,25 +294,8 @@ private:
   Array<Index> members(Index site) const
   {
     Array<Index> result;
-    for (Index p = m_first_member[site]; p != none; p = m_next_member[p])
+    for (Index p = m_first_member[site]; p != none_index; p = m_next_member[p])
       result.push_back(p);
-    return result;
-  }
-
-  // The present points within `squared_reach` of `q`, other than `q`.
-  Array<Index> present_within(Index q, double squared_reach) const
-  {
-    Array<Neighbor> near;
-    for (std::size_t count = 16;; count *= 4)
-    {
-      m_tree.nearest(q, count, near);
-      if (near.size() < count || near.back().squared_distance > squared_reach)
-        break;
-    }
-    Array<Index> result;
-    for (const Neighbor& s : near)
-      if (s.squared_distance <= squared_reach)
-        result.push_back(s.id);
     return result;
   }
 
@@ -202,9 +304,10 @@ private:
   void fill_heap()
   {
     Array<double> distances;
-    for (Index i = 0; i < Index(m_points.size()); ++i)
+    m_search.for_each_taking_part([&](Index i) {
       if (!m_present[i])
         distances.push_back(nearest(i).squared_distance);
+    });
     m_threshold = 0.;
     if (distances.size() > m_heap_size)
     {
@@ -214,9 +317,10 @@ private:
     }
     Array<double>().swap(distances);
     m_far.clear();
-    for (Index i = 0; i < Index(m_points.size()); ++i)
+    m_search.for_each_taking_part([&](Index i) {
       if (!m_present[i] && nearest(i).squared_distance >= m_threshold)
         m_far.push_back(far_entry(i));
+    });
     std::make_heap(m_far.begin(), m_far.end(), below);
     m_heap_size *= 2;
   }
@@ -228,15 +332,19 @@ private:
     return Neighbor{ nearest(p).squared_distance, m_points.input_position[p], p };
   }
 
-  // `p` joins the cell of `site`, its new nearest present point.
+  // `p` joins the cell of `site`, its new nearest present point, or none.
   void move(Index p, Index site)
   {
-    Index* at = &m_first_member[m_site[p]];
-    while (*at != p)
-      at = &m_next_member[*at];
-    *at = m_next_member[p];
+    if (m_site[p] != none_index)
+    {
+      Index* at = &m_first_member[m_site[p]];
+      while (*at != p)
+        at = &m_next_member[*at];
+      *at = m_next_member[p];
+    }
     m_site[p] = site;
-    link(p);
+    if (site != none_index)
+      link(p);
     if (!m_present[p])
     {
       m_far.push_back(far_entry(p));
@@ -252,7 +360,7 @@ private:
 
   const Indexed_points& m_points;
   Array<char>& m_present;
-  Point_tree m_tree;   // every point, those not present left out
+  Search m_search;
   Array<Index> m_site; // each point's nearest present point
   Array<Index> m_first_member, m_next_member; // each cell's members, as a list
   std::size_t m_heap_size;
@@ -260,44 +368,63 @@ private:
   Array<Neighbor> m_far; // (squared distance, input position, point), as the heap's entries
 };
 
-// The present points, most crowded first (see crowding; ties by input
-// position), their crowding in place of the squared distance.
-template <typename ConcurrencyTag>
-Array<Neighbor> present_by_crowding(const Indexed_points& points, const Array<Index>& sites, const Point_tree& tree,
-                                    const Array<double>& scale)
+// The entry of present point `s` in a Crowding_order, `squared_distance`
+// from its nearest other present point: its crowding in place of the
+// squared distance.
+inline Neighbor crowding_entry(const Indexed_points& points, const Array<double>& scale, Index s,
+                               double squared_distance)
 {
-  Array<Neighbor> crowded(sites.size());
-  for_each_index<ConcurrencyTag>(
-    sites.size(),
-    [&](std::size_t r) {
-      const Index s = sites[r];
-      crowded[r] = Neighbor{ crowding(squared_distance(points.points[s], points.points[tree.nearest_one(s)]), scale[s]),
-                             points.input_position[s], s };
-    },
-    [](std::size_t) { return true; });
-  std::sort(crowded.begin(), crowded.end());
-  return crowded;
+  return Neighbor{ crowding(squared_distance, scale[s]), points.input_position[s], s };
 }
 
+// The present points in the order of their crowding at the start (see
+// crowding), most crowded first, ties by input position, taken one at a
+// time: a heap, as the swaps take few of them.
+class Crowding_order
+{
+public:
+  // `crowded`: the entries of the present points (see crowding_entry).
+  explicit Crowding_order(Array<Neighbor> crowded) : m_heap(std::move(crowded))
+  {
+    std::make_heap(m_heap.begin(), m_heap.end(), after);
+  }
+
+  // The next point with its crowding at the start, or nothing when all were taken.
+  std::optional<Neighbor> next()
+  {
+    if (m_heap.empty())
+      return std::nullopt;
+    std::pop_heap(m_heap.begin(), m_heap.end(), after);
+    const Neighbor y = m_heap.back();
+    m_heap.pop_back();
+    return y;
+  }
+
+private:
+  static bool after(const Neighbor& a, const Neighbor& b) { return b < a; }
+
+  Array<Neighbor> m_heap;
+};
+
 // The present point that leaves once the farthest point is present: the
-// next of `crowded`, from `next` on, still present and as crowded as it
-// was, whose cell's members would all be nearer their new nearest present
-// points than the farthest point then is. The points passed, and the one
-// returned, are passed for good. Nothing when none is left.
-inline std::optional<Index> next_to_leave(const Indexed_points& points, Nearest_present& nearest,
-                                          const Array<Neighbor>& crowded, const Array<double>& scale,
-                                          std::size_t& next)
+// next of `crowded` still present and as crowded as it was, whose cell's
+// members would all be nearer their new nearest present points than the
+// farthest point then is. The points passed, and the one returned, are
+// passed for good. Nothing when none is left.
+template <typename Search>
+std::optional<Index> next_to_leave(Nearest_present<Search>& nearest, Crowding_order& crowded,
+                                   const Array<double>& scale)
 {
   const double greatest = nearest.greatest_squared_distance();
-  while (next < crowded.size())
+  while (const std::optional<Neighbor> next = crowded.next())
   {
-    const Neighbor& y = crowded[next++];
+    const Neighbor& y = *next;
     if (!nearest.is_present(y.id) ||
         crowding(nearest.nearest_but(y.id, y.id).squared_distance, scale[y.id]) > y.squared_distance)
       continue;
-    const Array<std::pair<Index, Index> > moves = nearest.cell_without(y.id);
-    if (std::all_of(moves.begin(), moves.end(), [&](const std::pair<Index, Index>& m) {
-          return squared_distance(points.points[m.first], points.points[m.second]) < greatest;
+    const Array<std::pair<Index, Neighbor> > moves = nearest.cell_without(y.id);
+    if (std::all_of(moves.begin(), moves.end(), [&](const std::pair<Index, Neighbor>& m) {
+          return m.second.squared_distance < greatest;
         }))
     {
       nearest.make_absent(y.id, moves);
@@ -312,6 +439,26 @@ inline std::optional<Index> next_to_leave(const Indexed_points& points, Nearest_
 // each point's, says how crowded), so that the swaps never raise the
 // greatest distance from a point to the present points. They stop early when
 // every point is present, or no present point can leave.
+template <typename Search>
+void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, const Array<double>& scale,
+                  std::size_t swaps)
+{
+  for (std::size_t swap = 0; swap < swaps; ++swap)
+  {
+    const std::optional<Index> x = nearest.farthest();
+    if (!x)
+      return;
+    nearest.make_present(*x);
+    if (!next_to_leave(nearest, crowded, scale))
+    {
+      nearest.make_absent(*x, nearest.cell_without(*x));
+      return;
+    }
+  }
+}
+
+// The coverage swaps of a direct call (see swap_in_turn), among all the
+// points.
 template <typename ConcurrencyTag>
 void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
                                const Array<double>& scale)
@@ -323,25 +470,63 @@ void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& presen
   if (sites.size() < 2 || sites.size() == points.size() || swaps == 0)
     return;
   // the present points' own tree serves the first searches, and goes
-  Array<Neighbor> crowded;
-  Nearest_present nearest = [&] {
-    const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
-    crowded = present_by_crowding<ConcurrencyTag>(points, sites, tree, scale);
-    return Nearest_present(points, present, tree, 64 * swaps, ConcurrencyTag());
-  }();
-  std::size_t next = 0;
-  for (std::size_t swap = 0; swap < swaps; ++swap)
+  Array<Neighbor> crowded(sites.size());
+  Array<Index> site(points.size());
   {
-    const std::optional<Index> x = nearest.farthest();
-    if (!x)
-      return;
-    nearest.make_present(*x);
-    if (!next_to_leave(points, nearest, crowded, scale, next))
-    {
-      nearest.make_absent(*x, nearest.cell_without(*x));
-      return;
-    }
+    const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
+    for_each_index<ConcurrencyTag>(
+      sites.size(),
+      [&](std::size_t r) {
+        const Index s = sites[r];
+        crowded[r] =
+          crowding_entry(points, scale, s, squared_distance(points.points[s], points.points[tree.nearest_one(s)]));
+      },
+      [](std::size_t) { return true; });
+    for_each_index<ConcurrencyTag>(
+      points.size(), [&](std::size_t i) { site[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
+      [](std::size_t) { return true; });
   }
+  Nearest_present<Tree_search> nearest(points, present, Tree_search(points, present, ConcurrencyTag()),
+                                       std::move(site), heap_size(swaps));
+  Crowding_order order(std::move(crowded));
+  swap_in_turn(nearest, order, scale, swaps);
+}
+
+// The coverage swaps at a ranking's level boundary (see swap_in_turn, and
+// List_search), among the points of the level above alone, `level`, so
+// that the levels stay nested: those present, and those the stage that
+// ended there removed. `first` and `neighbors` are that stage's lists of
+// neighbours. Returns each point's nearest present neighbour after the
+// swaps (ties by input position): itself when present, none when it has
+// none or lies outside `level`.
+template <typename ConcurrencyTag>
+Array<Index> swap_among_neighbors(const Indexed_points& points, Array<char>& present, const Array<Index>& level,
+                                  const Array<std::size_t>& first, const Array<Index>& neighbors,
+                                  std::size_t swaps, const Array<double>& scale)
+{
+  const List_search search(points, present, level, first, neighbors);
+  Array<Index> site(points.size(), none_index);
+  Array<Neighbor> nearest_other(level.size());
+  for_each_index<ConcurrencyTag>(
+    level.size(),
+    [&](std::size_t r) {
+      const Index i = level[r];
+      nearest_other[r] = search.nearest_but(i, i);
+      site[i] = present[i] ? i : nearest_other[r].id;
+    },
+    [](std::size_t) { return true; });
+  std::size_t count = 0;
+  for (std::size_t r = 0; r < level.size(); ++r)
+    if (present[level[r]])
+      nearest_other[count++] = crowding_entry(points, scale, level[r], nearest_other[r].squared_distance);
+  nearest_other.resize(count);
+  Array<Neighbor> crowded = std::move(nearest_other);
+  if (crowded.size() < 2 || crowded.size() == level.size() || swaps == 0)
+    return site;
+  Nearest_present<List_search> nearest(points, present, search, std::move(site), heap_size(swaps));
+  Crowding_order order(std::move(crowded));
+  swap_in_turn(nearest, order, scale, swaps);
+  return nearest.release_sites();
 }
 
 } // namespace internal

@@ -43,7 +43,8 @@ struct Default_mode_terms
   // nearest the centroids (see greatest_squared_radius_about_centroids)
   bool radius_bound = true;
   // the relocated points end with a few swaps of the points farthest from
-  // them for the most crowded of them (see swap_farthest_for_crowded)
+  // them for the most crowded of them (see swap_farthest_for_crowded); a
+  // ranking's level boundaries are swapped either way (see swap_among_neighbors)
   bool coverage_swaps = true;
 };
 

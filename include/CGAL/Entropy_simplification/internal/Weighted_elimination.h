@@ -9,6 +9,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
@@ -510,41 +511,16 @@ private:
     return order;
   }
 
-  // The present point nearest `i` among those within its reach (the stage's
-  // neighbours), ties to the lowest input position; none when none is.
-  std::optional<Index> nearest_present_neighbor(Index i) const
-  {
-    std::optional<Index> nearest;
-    double nearest_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t e = m_first[i]; e < m_first[i + 1]; ++e)
-    {
-      const Index j = m_neighbors[e];
-      if (!is_present(j))
-        continue;
-      const double d = squared_distance(m_points.points[i], m_points.points[j]);
-      if (d < nearest_distance ||
-          (d == nearest_distance && m_points.input_position[j] < m_points.input_position[*nearest]))
-      {
-        nearest = j;
-        nearest_distance = d;
-      }
-    }
-    return nearest;
-  }
-
-  // At a level boundary: the points removed in the stage join the cells of
-  // their nearest present neighbours, and each cell's point moves to its
-  // median.
+  // At a level boundary: the coverage swaps among the points of the level
+  // above, then the points removed in the stage join the cells of their
+  // nearest present neighbours, and each cell's point moves to its median.
   template <typename ConcurrencyTag>
   void relocate_level(Array<Index>& stage_removed)
   {
-    Array<std::optional<Index> > site(stage_removed.size());
-    for_each_index<ConcurrencyTag>(
-      stage_removed.size(), [&](std::size_t r) { site[r] = nearest_present_neighbor(stage_removed[r]); },
-      [](std::size_t) { return true; });
-    for (std::size_t r = 0; r < stage_removed.size(); ++r)
-      if (site[r])
-        m_level_cells->join(stage_removed[r], *site[r]);
+    const Array<Index> site = swap_within_level_above<ConcurrencyTag>(stage_removed);
+    for (Index r : stage_removed)
+      if (site[r] != none_index)
+        m_level_cells->join(r, site[r]);
     list_present();
     const Array<Index> arrived =
       m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, stage_removed);
@@ -553,6 +529,57 @@ private:
     m_listed.insert(m_listed.end(), arrived.begin(), arrived.end());
     std::sort(m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
     std::inplace_merge(m_listed.begin(), m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
+  }
+
+  // The coverage swaps of a level boundary, among the present points and
+  // those the stage removed, searched among the stage's neighbours, as many
+  // as a direct call keeping the present points makes: the direct calls'
+  // swaps would leave the ranking's prefixes behind them otherwise. The
+  // j-th point that leaves takes the place, in `stage_removed`, of the j-th
+  // point that comes, both in input order. Returns each point's nearest
+  // present neighbour then (see swap_among_neighbors).
+  template <typename ConcurrencyTag>
+  Array<Index> swap_within_level_above(Array<Index>& stage_removed)
+  {
+    // in index order, so that the passes over it read the points in the
+    // order they lie in memory (twice as fast as in the order of removal)
+    Array<char> in_level = m_present;
+    for (Index r : stage_removed)
+      in_level[r] = 1;
+    Array<Index> level;
+    level.reserve(m_count + stage_removed.size());
+    for (Index i = 0; i < Index(m_points.size()); ++i)
+      if (in_level[i])
+        level.push_back(i);
+    Array<char>().swap(in_level);
+    list_present();
+    Array<Index> site = swap_among_neighbors<ConcurrencyTag>(m_points, m_present, level, m_first, m_neighbors,
+                                                             coverage_swap_count(m_listed.size()), m_field.scale);
+    Array<Index> gone, come;
+    for (Index i : m_listed)
+      if (!is_present(i))
+        gone.push_back(i);
+    for (Index r : stage_removed)
+      if (is_present(r))
+        come.push_back(r);
+    if (gone.empty())
+      return site;
+    const auto by_input = [this](Index a, Index b) { return m_points.input_position[a] < m_points.input_position[b]; };
+    std::sort(gone.begin(), gone.end(), by_input);
+    std::sort(come.begin(), come.end(), by_input);
+    Array<std::pair<Index, Index> > leaving_for; // (point that comes, point that leaves), by the first
+    for (std::size_t j = 0; j < come.size(); ++j)
+      leaving_for.emplace_back(come[j], gone[j]);
+    std::sort(leaving_for.begin(), leaving_for.end());
+    for (Index& r : stage_removed)
+      if (is_present(r))
+        r = std::lower_bound(leaving_for.begin(), leaving_for.end(), std::make_pair(r, Index(0)))->second;
+    list_present();
+    std::sort(come.begin(), come.end());
+    const std::size_t stayed = m_listed.size();
+    m_listed.insert(m_listed.end(), come.begin(), come.end());
+    std::inplace_merge(m_listed.begin(), m_listed.begin() + std::ptrdiff_t(stayed), m_listed.end());
+    return site;
   }
 
   std::int64_t weight(Index a, Index b, const Elimination_stage& stage) const
