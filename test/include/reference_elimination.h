@@ -725,14 +725,17 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
 // The default mode
 // ----------------------------------------------------------------------------
 
-// The coverage swaps of a run that keeps `kept` points: three per hundred,
-// rounded up.
-inline std::size_t coverage_swaps_keeping(std::size_t kept) { return (3 * kept + 99) / 100; }
+// The coverage swaps of a run that keeps `kept` of `n` points: three per
+// hundred, rounded up, when it keeps at most a quarter of them, else one.
+inline std::size_t coverage_swaps_keeping(std::size_t kept, std::size_t n)
+{
+  return ((4 * kept <= n ? 3 : 1) * kept + 99) / 100;
+}
 
 // The removal order of the default mode down to `target` points, on the
 // `field` of the points: the elimination's, then two iterations of
-// relocation and the coverage swaps, three per hundred kept points rounded
-// up; the j-th point the relocation drops takes the place, in the
+// relocation and the coverage swaps (see coverage_swaps_keeping); the j-th
+// point the relocation drops takes the place, in the
 // removal order, of the j-th point it brings in, both in input order. The
 // `terms` switched off are left out.
 inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, const Field& field,
@@ -748,7 +751,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
   for (int iteration = 0; iteration < (terms.relocation ? 2 : 0); ++iteration)
     relocated = relocation_step(points, relocated, terms);
   if (terms.coverage_swaps)
-    swap_farthest_for_crowded(points, relocated, coverage_swaps_keeping(target), field.scale);
+    swap_farthest_for_crowded(points, relocated, coverage_swaps_keeping(target, points.size()), field.scale);
   std::vector<std::size_t> gone, come;
   for (std::size_t p = 0; p < points.size(); ++p)
   {
@@ -798,8 +801,8 @@ inline std::vector<std::size_t> cells_of_present(const std::vector<Point>& point
 }
 
 // At a boundary, first: the coverage swaps on a cloud of the present points
-// and those the stage removed alone, as many as a run keeping the present
-// points makes, a point's present points being those of nonzero weight in
+// and those the stage removed alone, three per hundred present points
+// rounded up, a point's present points being those of nonzero weight in
 // the stage; the j-th point that leaves takes the place, in
 // `stage_removed`, of the j-th point that comes, both in input order.
 inline void swap_at_boundary(const std::vector<Point>& points, const std::vector<double>& scale,
@@ -823,7 +826,7 @@ inline void swap_at_boundary(const std::vector<Point>& points, const std::vector
       cloud_scale.push_back(scale[p]);
     }
   const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), true));
-  swap_farthest_for_crowded(cloud, cloud_present, coverage_swaps_keeping(kept), cloud_scale,
+  swap_farthest_for_crowded(cloud, cloud_present, (3 * kept + 99) / 100, cloud_scale,
                             [&](std::size_t a, std::size_t b) { return weights[position[a] * n + position[b]] != 0; });
   std::vector<std::size_t> gone, come;
   for (std::size_t c = 0; c < cloud.size(); ++c)

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -25,16 +26,33 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// The swaps a run keeping `kept` points makes: three per hundred kept
-// points, rounded up. The widest gaps set the Hausdorff distance, the
-// narrower ones weigh on the mean distance; each swap closes one, and takes
-// a point from the most crowded (see crowding). Against one per hundred,
-// on issue 12's cells (scratch): the Hausdorff distance 6 to 9% and the
-// mean distance 0.4 to 0.5% lower, the point-to-plane error 0.5 to 1.5%
-// higher, fandisk's edge share 1.4% lower. Beyond one per hundred, a
-// ranking's prefixes fell behind the direct calls until its level
-// boundaries were swapped too (see swap_among_neighbors).
-inline std::size_t coverage_swap_count(std::size_t kept) { return (3 * kept + 99) / 100; }
+// Three swaps per hundred kept points, rounded up.
+inline std::size_t three_per_hundred(std::size_t kept) { return (3 * kept + 99) / 100; }
+
+// The swaps a direct call keeping `kept` of `n` points makes: three per
+// hundred kept points when it keeps at most a quarter of them, one per
+// hundred otherwise, rounded up. The widest gaps set the Hausdorff
+// distance, the narrower ones weigh on the mean distance; each swap closes
+// one, and takes a point from the most crowded (see crowding). Three per
+// hundred everywhere against one (benchmark run at 4ddaf34, see the
+// manual): the mean-distance target of issue 12 met in two more cells
+// (lion at 20%, anchor at 10%), fandisk's edge shares 2.233 / 2.196 / 1.584
+// instead of 2.264 / 2.232 / 1.606 at 10 / 20 / 50%, the last below its
+// target of 1.6.
+inline std::size_t coverage_swap_count(std::size_t kept, std::size_t n)
+{
+  return std::uint64_t(4) * kept <= n ? three_per_hundred(kept) : (kept + 99) / 100;
+}
+
+// The swaps at a ranking's level boundary keeping `kept` points: three per
+// hundred at every boundary, including those above a quarter, where the
+// direct calls make one per hundred. Beyond one per hundred, the prefixes
+// fell behind the direct calls until the boundaries were swapped too; with
+// one per hundred at the 50% boundary, every boundary below changed, and
+// `b9_training`'s prefix at 5% had 1.0555 times the direct call's mean
+// distance and 1.066 times its point-to-plane error, above the test's 1.055
+// and 1.06 (see swap_among_neighbors).
+inline std::size_t boundary_swap_count(std::size_t kept) { return three_per_hundred(kept); }
 
 // How crowded a present point is, the smaller the more: the squared
 // distance to its nearest other present point over the square of its

@@ -205,7 +205,8 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
   if (terms.coverage_swaps)
     swap_farthest_for_crowded<ConcurrencyTag>(
-      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1)))), scale);
+      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1))), points.size()),
+      scale);
 
   Array<Index> gone, come;
   for (Index i : by_input)

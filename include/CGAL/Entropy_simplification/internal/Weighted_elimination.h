@@ -532,9 +532,9 @@ private:
   }
 
   // The coverage swaps of a level boundary, among the present points and
-  // those the stage removed, searched among the stage's neighbours, as many
-  // as a direct call keeping the present points makes: the direct calls'
-  // swaps would leave the ranking's prefixes behind them otherwise. The
+  // those the stage removed, searched among the stage's neighbours (see
+  // boundary_swap_count): the direct calls' swaps would leave the ranking's
+  // prefixes behind them otherwise. The
   // j-th point that leaves takes the place, in `stage_removed`, of the j-th
   // point that comes, both in input order. Returns each point's nearest
   // present neighbour then (see swap_among_neighbors).
@@ -554,7 +554,7 @@ private:
     Array<char>().swap(in_level);
     list_present();
     Array<Index> site = swap_among_neighbors<ConcurrencyTag>(m_points, m_present, level, m_first, m_neighbors,
-                                                             coverage_swap_count(m_listed.size()), m_field.scale);
+                                                             boundary_swap_count(m_listed.size()), m_field.scale);
     Array<Index> gone, come;
     for (Index i : m_listed)
       if (!is_present(i))
