@@ -148,8 +148,13 @@ TEST_CASE("Ranks, default mode: equal the reference's, sequentially and in paral
 {
   test_parallel::require_tbb();
   const unsigned int k = 5;
+  // the islands: their points removed at a boundary have no present point
+  // among their neighbours in the stage, where the boundary's swaps search;
+  // there they differ from swaps searched among all the points (with the
+  // reference searching all, the ranks differ at levels 129, 518 and 648)
   for (const test_clouds::Cloud& cloud :
-       { test_clouds::small_replica(720, 80, 0.002, 11), test_clouds::wavy_surface(800, 0.01, 4) })
+       { test_clouds::small_replica(720, 80, 0.002, 11), test_clouds::wavy_surface(800, 0.01, 4),
+         test_clouds::wavy_with_islands(600, 6, 8, 1) })
   {
     const ES::Options options;
     const reference::Field field = reference::feature_field(cloud.points, k, options);

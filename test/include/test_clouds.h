@@ -54,6 +54,24 @@ inline Cloud wavy_surface(std::size_t n, double noise, std::uint64_t seed)
   return c;
 }
 
+// A wavy patch with `count` small islands of `per_island` points beyond it,
+// in a row, listed first: the stages of a ranking empty the islands, whose
+// points then have no present point within their reach.
+inline Cloud wavy_with_islands(std::size_t n, std::size_t count, std::size_t per_island, std::uint64_t seed)
+{
+  Cloud patch = wavy_surface(n, 0.01, seed);
+  Random random(seed + 1);
+  Cloud c{ "wavy surface " + std::to_string(n) + " with " + std::to_string(count) + " islands", {} };
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const double x = 2. + 0.5 * double(k), y = 3. * random.uniform();
+    for (std::size_t j = 0; j < per_island; ++j)
+      c.points.emplace_back(x + 0.03 * random.uniform(), y + 0.03 * random.uniform(), 0.03 * random.uniform());
+  }
+  c.points.insert(c.points.end(), patch.points.begin(), patch.points.end());
+  return c;
+}
+
 // Points uniform in a cube: no surface at all.
 inline Cloud cube_volume(std::size_t n, std::uint64_t seed)
 {
