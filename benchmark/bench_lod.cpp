@@ -7,9 +7,12 @@
 //
 // 1. Cost: the whole order, without a level and with its exact level at
 //    1%, against one direct call of entropy_simplify_point_set to 1%, in
-//    the same process, run after run (median of 3), with Parallel_tag on
-//    the machine's threads: the default mode on lion samples of 100k and 1M
-//    points, the paper's mode on 100k.
+//    the same process, run after run, with Parallel_tag on the machine's
+//    threads: the default mode on lion samples of 100k and 1M points, the
+//    paper's mode on 100k. Each run's ratios, of the orders' times to the
+//    direct call's just before, their medians and ranges: 11 runs at 100k,
+//    where a call takes a quarter of a second, and the medians of 21 runs of
+//    the same code moved by up to 0.06 from one process to the next; 5 at 1M.
 // 2. Quality: the first m points by rank against a direct call to m, at 1,
 //    5, 10, 20 and 50%, without a level and with the level at 1%: the mean
 //    distance and the point-to-plane error (measure_simplification_quality)
@@ -97,11 +100,18 @@ void require_same_set(std::vector<Point> a, std::vector<Point> b)
     throw std::logic_error("the level's prefix is not the direct call's result");
 }
 
+struct Ratios
+{
+  double median, least, greatest;
+};
+
 struct Cost
 {
   std::string mode, input;
   std::size_t n;
-  double direct, without_level, with_level;
+  int runs;
+  double direct, without_level, with_level; // median times
+  Ratios without_level_ratio, with_level_ratio; // of each run
 };
 
 Cost measure_cost(const std::string& input, const std::vector<Point>& points, const ES::Options& options, int runs)
@@ -125,8 +135,21 @@ Cost measure_cost(const std::string& input, const std::vector<Point>& points, co
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
   };
-  return { options.mode == ES::Mode::paper ? "paper" : "default", input, points.size(), median(direct),
-           median(without_level), median(with_level) };
+  const auto ratios = [&](const std::vector<double>& order) {
+    std::vector<double> r;
+    for (std::size_t i = 0; i < order.size(); ++i)
+      r.push_back(order[i] / direct[i]);
+    return Ratios{ median(r), *std::min_element(r.begin(), r.end()), *std::max_element(r.begin(), r.end()) };
+  };
+  return { options.mode == ES::Mode::paper ? "paper" : "default",
+           input,
+           points.size(),
+           runs,
+           median(direct),
+           median(without_level),
+           median(with_level),
+           ratios(without_level),
+           ratios(with_level) };
 }
 
 struct Prefix_quality
@@ -193,11 +216,13 @@ int main(int argc, char** argv)
     ES::Options paper;
     paper.mode = ES::Mode::paper;
     const std::size_t small = smoke ? 20000 : 100000, large = smoke ? 50000 : 1000000;
-    const int runs = smoke ? 1 : 3;
+    const int small_runs = smoke ? 1 : 11, large_runs = smoke ? 1 : 5;
     std::vector<Cost> costs;
-    costs.push_back(measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, ES::Options(), runs));
-    costs.push_back(measure_cost("lion", bench::mesh_sample("lion", lion, large, false).points, ES::Options(), runs));
-    costs.push_back(measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, paper, runs));
+    costs.push_back(
+      measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, ES::Options(), small_runs));
+    costs.push_back(
+      measure_cost("lion", bench::mesh_sample("lion", lion, large, false).points, ES::Options(), large_runs));
+    costs.push_back(measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, paper, small_runs));
 
     std::vector<bench::Cloud> clouds;
     clouds.push_back(bench::mesh_sample("lion", lion, smoke ? 30000 : 457124, false));
@@ -217,20 +242,25 @@ int main(int argc, char** argv)
                 "### Cost of the whole order\n\n`CGAL::entropy_simplification_ranks(points, 10, ranks)`, "
                 "without a level, and with `number_of_output_points(L)`, against one "
                 "`CGAL::entropy_simplify_point_set(points, 10, number_of_output_points(L))`, L = 1%% of the "
-                "points, `Parallel_tag` on the machine's threads, run after run in one process (median of %d), on "
-                "`meshes/lion.off` sampled uniformly in area (seed 2018). Issue 11's target: at most 1.1x.\n\n"
-                "| mode | input | points | direct call to 1%% | whole order, no level | ratio | whole order, "
-                "level 1%% | ratio |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
-                smoke ? " --smoke" : "", bench::machine_description().c_str(), runs);
+                "points, `Parallel_tag` on the machine's threads, run after run in one process, on "
+                "`meshes/lion.off` sampled uniformly in area (seed 2018). Times: medians; ratios: the median, "
+                "and the range, of each run's ratio to the direct call just before it (*runs* runs: on 100,000 "
+                "points a call takes a quarter of a second, and the medians of 21 runs of the same code moved "
+                "by up to 0.06 from one process to the next). Issue "
+                "11's target: at most 1.1x.\n\n"
+                "| mode | input | points | runs | direct call to 1%% | whole order, no level | ratio | whole "
+                "order, level 1%% | ratio |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
+                smoke ? " --smoke" : "", bench::machine_description().c_str());
     for (const Cost& c : costs)
     {
-      std::printf("| %s | %s | %zu | %.3f s | %.3f s | %.2f | %.3f s | %.2f |\n", c.mode.c_str(), c.input.c_str(),
-                  c.n, c.direct, c.without_level, c.without_level / c.direct, c.with_level,
-                  c.with_level / c.direct);
+      std::printf("| %s | %s | %zu | %d | %.3f s | %.3f s | %.3f (%.3f to %.3f) | %.3f s | %.3f (%.3f to %.3f) |\n",
+                  c.mode.c_str(), c.input.c_str(), c.n, c.runs, c.direct, c.without_level,
+                  c.without_level_ratio.median, c.without_level_ratio.least, c.without_level_ratio.greatest,
+                  c.with_level, c.with_level_ratio.median, c.with_level_ratio.least, c.with_level_ratio.greatest);
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",none,1," << c.direct << "," << c.without_level
-          << "," << c.without_level / c.direct << "\n";
+          << "," << c.without_level_ratio.median << "\n";
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1,1," << c.direct << "," << c.with_level << ","
-          << c.with_level / c.direct << "\n";
+          << c.with_level_ratio.median << "\n";
     }
     std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, without a level (every "
                 "level boundary relocated) and with the level at 1%%, against `CGAL::entropy_simplify_point_set` "

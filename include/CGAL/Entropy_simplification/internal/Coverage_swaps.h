@@ -73,16 +73,63 @@ constexpr Index none_index = Index(-1);
 // The nearest present point of a point that has none, at an infinite distance.
 inline Neighbor no_neighbor() { return Neighbor{ std::numeric_limits<double>::infinity(), none_index, none_index }; }
 
+// The members of each present point's cell, `site` holding each point's
+// present point, as lists linked through the points.
+class Cell_lists
+{
+public:
+  explicit Cell_lists(const Array<Index>& site) : m_first_member(site.size(), none_index), m_next_member(site.size())
+  {
+    for (Index p = 0; p < Index(site.size()); ++p)
+      if (site[p] != none_index)
+        link(p, site[p]);
+  }
+
+  // `p` leaves the cell of `from` for that of `to`, either none.
+  void move(Index p, Index from, Index to)
+  {
+    if (from != none_index)
+    {
+      Index* at = &m_first_member[from];
+      while (*at != p)
+        at = &m_next_member[*at];
+      *at = m_next_member[p];
+    }
+    if (to != none_index)
+      link(p, to);
+  }
+
+  Array<Index> members(Index site) const
+  {
+    Array<Index> result;
+    for (Index p = m_first_member[site]; p != none_index; p = m_next_member[p])
+      result.push_back(p);
+    return result;
+  }
+
+private:
+  void link(Index p, Index site)
+  {
+    m_next_member[p] = m_first_member[site];
+    m_first_member[site] = p;
+  }
+
+  Array<Index> m_first_member, m_next_member;
+};
+
 // The searches of a direct call's swaps, where every point takes part: the
 // present points, in a tree of every point, those not present left out.
+// The tree finds the cells near a point, not their members, which are
+// listed. `site` holds each point's present point at the start.
 class Tree_search
 {
 public:
   template <typename ConcurrencyTag>
-  Tree_search(const Indexed_points& points, const Array<char>& present, ConcurrencyTag)
-    : m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
+  Tree_search(const Indexed_points& points, const Array<char>& present, const Array<Index>& site, ConcurrencyTag)
+    : m_points(points),
+      m_tree(points, boost::counting_iterator<Index>(0), boost::counting_iterator<Index>(Index(points.size())),
              ConcurrencyTag()),
-      m_tree_size(points.size())
+      m_cells(site)
   {
     for (Index i = 0; i < Index(points.size()); ++i)
       if (!present[i])
@@ -92,7 +139,7 @@ public:
   template <typename Function>
   void for_each_taking_part(const Function& f) const
   {
-    for (Index i = 0; i < Index(m_tree_size); ++i)
+    for (Index i = 0; i < Index(m_points.size()); ++i)
       f(i);
   }
 
@@ -112,18 +159,22 @@ public:
   // is present, `x` being the point farthest from the present points, at
   // `squared_distance` from its own: none is farther from its own, so they
   // lie in the cells of the present points within twice that distance.
-  template <typename Members>
-  Array<Index> may_move_to(Index x, double squared_distance, const Members& members) const
+  Array<Index> may_move_to(Index x, double squared_distance) const
   {
     Array<Index> result;
     for (Index s : present_within(x, 4. * squared_distance * (1. + 1e-9)))
-      for (Index p : members(s))
+      for (Index p : m_cells.members(s))
         result.push_back(p);
     return result;
   }
 
+  // The members of the cell of present point `y`.
+  Array<Index> members(Index y, const Array<Index>&) const { return m_cells.members(y); }
+
   void made_present(Index x) { m_tree.restore(x); }
   void made_absent(Index y) { m_tree.remove(y); }
+  // `p`'s present point was `from` and is `to`.
+  void moved(Index p, Index from, Index to) { m_cells.move(p, from, to); }
 
 private:
   // The present points within `squared_reach` of `q`, other than `q`.
@@ -143,8 +194,9 @@ private:
     return result;
   }
 
+  const Indexed_points& m_points;
   Point_tree m_tree;
-  std::size_t m_tree_size;
+  Cell_lists m_cells;
 };
 
 // The searches of a ranking's swaps at a level boundary, where the points of
@@ -154,6 +206,8 @@ private:
 // The elimination built the lists; the swaps then build no tree, which at
 // every boundary cost the whole order 1.6 to 1.7 times a direct call (see
 // the manual). A point with no present neighbour is at an infinite distance.
+// As the lists are symmetric, a cell's members are among its present
+// point's neighbours, and need no lists of their own.
 class List_search
 {
 public:
@@ -183,15 +237,25 @@ public:
   }
 
   // `x`'s neighbours, the only points whose nearest present point it can be.
-  template <typename Members>
-  Array<Index> may_move_to(Index x, double, const Members&) const
+  Array<Index> may_move_to(Index x, double) const
   {
     return Array<Index>(m_neighbors.begin() + std::ptrdiff_t(m_first[x]),
                         m_neighbors.begin() + std::ptrdiff_t(m_first[x + 1]));
   }
 
+  // The members of the cell of present point `y`, `site` holding each point's present point.
+  Array<Index> members(Index y, const Array<Index>& site) const
+  {
+    Array<Index> result{ y };
+    for (std::size_t e = m_first[y]; e < m_first[y + 1]; ++e)
+      if (site[m_neighbors[e]] == y)
+        result.push_back(m_neighbors[e]);
+    return result;
+  }
+
   void made_present(Index) {}
   void made_absent(Index) {}
+  void moved(Index, Index, Index) {}
 
 private:
   const Indexed_points& m_points;
@@ -202,9 +266,9 @@ private:
 };
 
 // Each taking part point's nearest present point (ties by input position;
-// found by a `Search`, see Tree_search and List_search), its cell, and the
-// points not present farthest from theirs, kept up to date as points are
-// made present or not. The farthest points are a heap of the points beyond
+// found by a `Search`, see Tree_search and List_search, which also gives
+// each cell's members), and the points not present farthest from theirs,
+// kept up to date as points are made present or not. The farthest points are a heap of the points beyond
 // a threshold and of every change since it was set, the outdated entries
 // skipped when they come to the top; when none beyond the threshold is
 // left, it is set again lower.
@@ -224,12 +288,8 @@ public:
   Nearest_present(const Indexed_points& points, Array<char>& present, Search search, Array<Index> site,
                   std::size_t heap_size)
     : m_points(points), m_present(present), m_search(std::move(search)), m_site(std::move(site)),
-      m_first_member(points.size(), none_index), m_next_member(points.size(), none_index), m_heap_size(heap_size)
+      m_heap_size(heap_size)
   {
-    m_search.for_each_taking_part([&](Index i) {
-      if (m_site[i] != none_index)
-        link(i);
-    });
     fill_heap();
   }
 
@@ -270,8 +330,7 @@ public:
   // points nearer it than to their present points.
   void make_present(Index x)
   {
-    const Array<Index> near =
-      m_search.may_move_to(x, nearest(x).squared_distance, [this](Index s) { return members(s); });
+    const Array<Index> near = m_search.may_move_to(x, nearest(x).squared_distance);
     m_present[x] = 1;
     m_search.made_present(x);
     move(x, x);
@@ -285,7 +344,7 @@ public:
   Array<std::pair<Index, Neighbor> > cell_without(Index y) const
   {
     Array<std::pair<Index, Neighbor> > moves;
-    for (Index p : members(y))
+    for (Index p : m_search.members(y, m_site))
       moves.emplace_back(p, m_search.nearest_but(p, y));
     return moves;
   }
@@ -307,14 +366,6 @@ private:
       return no_neighbor();
     return Neighbor{ squared_distance(m_points.points[q], m_points.points[site]), m_points.input_position[site],
                      site };
-  }
-
-  Array<Index> members(Index site) const
-  {
-    Array<Index> result;
-    for (Index p = m_first_member[site]; p != none_index; p = m_next_member[p])
-      result.push_back(p);
-    return result;
   }
 
   // The heap holds again every point not present at least as far as the
@@ -353,16 +404,8 @@ private:
   // `p` joins the cell of `site`, its new nearest present point, or none.
   void move(Index p, Index site)
   {
-    if (m_site[p] != none_index)
-    {
-      Index* at = &m_first_member[m_site[p]];
-      while (*at != p)
-        at = &m_next_member[*at];
-      *at = m_next_member[p];
-    }
+    m_search.moved(p, m_site[p], site);
     m_site[p] = site;
-    if (site != none_index)
-      link(p);
     if (!m_present[p])
     {
       m_far.push_back(far_entry(p));
@@ -370,17 +413,10 @@ private:
     }
   }
 
-  void link(Index p)
-  {
-    m_next_member[p] = m_first_member[m_site[p]];
-    m_first_member[m_site[p]] = p;
-  }
-
   const Indexed_points& m_points;
   Array<char>& m_present;
   Search m_search;
   Array<Index> m_site; // each point's nearest present point
-  Array<Index> m_first_member, m_next_member; // each cell's members, as a list
   std::size_t m_heap_size;
   double m_threshold = 0.;
   Array<Neighbor> m_far; // (squared distance, input position, point), as the heap's entries
@@ -504,8 +540,8 @@ void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& presen
       points.size(), [&](std::size_t i) { site[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
       [](std::size_t) { return true; });
   }
-  Nearest_present<Tree_search> nearest(points, present, Tree_search(points, present, ConcurrencyTag()),
-                                       std::move(site), heap_size(swaps));
+  Tree_search search(points, present, site, ConcurrencyTag());
+  Nearest_present<Tree_search> nearest(points, present, std::move(search), std::move(site), heap_size(swaps));
   Crowding_order order(std::move(crowded));
   swap_in_turn(nearest, order, scale, swaps);
 }
