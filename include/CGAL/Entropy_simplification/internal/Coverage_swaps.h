@@ -168,7 +168,7 @@ public:
     return result;
   }
 
-  // The members of the cell of present point `y`.
+  // The members of the cell of `y`.
   Array<Index> members(Index y, const Array<Index>&) const { return m_cells.members(y); }
 
   void made_present(Index x) { m_tree.restore(x); }
@@ -206,8 +206,9 @@ private:
 // The elimination built the lists; the swaps then build no tree, which at
 // every boundary cost the whole order 1.6 to 1.7 times a direct call (see
 // the manual). A point with no present neighbour is at an infinite distance.
-// As the lists are symmetric, a cell's members are among its present
-// point's neighbours, and need no lists of their own.
+// Each point's present point is one of its neighbours, as it is searched
+// there; the lists being symmetric, a cell's members are then among its
+// present point's neighbours, and need no lists of their own.
 class List_search
 {
 public:
@@ -243,10 +244,13 @@ public:
                         m_neighbors.begin() + std::ptrdiff_t(m_first[x + 1]));
   }
 
-  // The members of the cell of present point `y`, `site` holding each point's present point.
+  // The members of the cell of `y`, `site` holding each point's present
+  // point: `y` itself among them unless a point at a distance of 0 took it.
   Array<Index> members(Index y, const Array<Index>& site) const
   {
-    Array<Index> result{ y };
+    Array<Index> result;
+    if (site[y] == y)
+      result.push_back(y);
     for (std::size_t e = m_first[y]; e < m_first[y + 1]; ++e)
       if (site[m_neighbors[e]] == y)
         result.push_back(m_neighbors[e]);
@@ -268,10 +272,10 @@ private:
 // Each taking part point's nearest present point (ties by input position;
 // found by a `Search`, see Tree_search and List_search, which also gives
 // each cell's members), and the points not present farthest from theirs,
-// kept up to date as points are made present or not. The farthest points are a heap of the points beyond
-// a threshold and of every change since it was set, the outdated entries
-// skipped when they come to the top; when none beyond the threshold is
-// left, it is set again lower.
+// kept up to date as points are made present or not. The farthest points
+// are a heap of the points beyond a threshold and of every change since it
+// was set, the outdated entries skipped when they come to the top; when
+// none beyond the threshold is left, it is set again lower.
 template <typename Search>
 class Nearest_present
 {
