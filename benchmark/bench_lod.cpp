@@ -11,8 +11,9 @@
 //    threads: the default mode on lion samples of 100k and 1M points, the
 //    paper's mode on 100k. Each run's ratios, of the orders' times to the
 //    direct call's just before, their medians and ranges: 11 runs at 100k,
-//    where a call takes a quarter of a second, and the medians of 21 runs of
-//    the same code moved by up to 0.07 from one process to the next; 5 at 1M.
+//    where a default-mode call takes a quarter of a second, and the medians
+//    of 21 runs of the same code moved by up to 0.07 from one process to the
+//    next; 5 at 1M.
 // 2. Quality: the first m points by rank against a direct call to m, at 1,
 //    5, 10, 20 and 50%, without a level and with the level at 1%: the mean
 //    distance and the point-to-plane error (measure_simplification_quality)
@@ -245,9 +246,9 @@ int main(int argc, char** argv)
                 "points, `Parallel_tag` on the machine's threads, run after run in one process, on "
                 "`meshes/lion.off` sampled uniformly in area (seed 2018). Times: medians; ratios: the median, "
                 "and the range, of each run's ratio to the direct call just before it (*runs* runs: on 100,000 "
-                "points a call takes a quarter of a second, and the medians of 21 runs of the same code moved "
-                "by up to 0.07 from one process to the next). Issue "
-                "11's target: at most 1.1x.\n\n"
+                "points a direct call of the default mode takes a quarter of a second, and the medians of 21 "
+                "runs of the same code moved by up to 0.07 from one process to the next). Issue 11's target: "
+                "at most 1.1x.\n\n"
                 "| mode | input | points | runs | direct call to 1%% | whole order, no level | ratio | whole "
                 "order, level 1%% | ratio |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
                 smoke ? " --smoke" : "", bench::machine_description().c_str());
