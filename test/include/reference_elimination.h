@@ -725,11 +725,14 @@ inline void swap_farthest_for_crowded(const std::vector<Point>& points, std::vec
 // The default mode
 // ----------------------------------------------------------------------------
 
+// `rate` per hundred of `kept` points, rounded up.
+inline std::size_t per_hundred(std::size_t rate, std::size_t kept) { return (rate * kept + 99) / 100; }
+
 // The coverage swaps of a run that keeps `kept` of `n` points: three per
 // hundred, rounded up, when it keeps at most a quarter of them, else one.
 inline std::size_t coverage_swaps_keeping(std::size_t kept, std::size_t n)
 {
-  return ((4 * kept <= n ? 3 : 1) * kept + 99) / 100;
+  return per_hundred(4 * kept <= n ? 3 : 1, kept);
 }
 
 // The removal order of the default mode down to `target` points, on the
@@ -826,7 +829,7 @@ inline void swap_at_boundary(const std::vector<Point>& points, const std::vector
       cloud_scale.push_back(scale[p]);
     }
   const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), true));
-  swap_farthest_for_crowded(cloud, cloud_present, (3 * kept + 99) / 100, cloud_scale,
+  swap_farthest_for_crowded(cloud, cloud_present, per_hundred(3, kept), cloud_scale,
                             [&](std::size_t a, std::size_t b) { return weights[position[a] * n + position[b]] != 0; });
   std::vector<std::size_t> gone, come;
   for (std::size_t c = 0; c < cloud.size(); ++c)

@@ -204,9 +204,10 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
   for (int iteration = 0; iteration < iterations; ++iteration)
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
   if (terms.coverage_swaps)
-    swap_farthest_for_crowded<ConcurrencyTag>(
-      points, present, coverage_swap_count(std::size_t(std::count(present.begin(), present.end(), char(1))), points.size()),
-      scale);
+  {
+    const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), char(1)));
+    swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale);
+  }
 
   Array<Index> gone, come;
   for (Index i : by_input)

@@ -534,9 +534,9 @@ private:
   // The coverage swaps of a level boundary, among the present points and
   // those the stage removed, searched among the stage's neighbours (see
   // boundary_swap_count): the direct calls' swaps would leave the ranking's
-  // prefixes behind them otherwise. The
-  // j-th point that leaves takes the place, in `stage_removed`, of the j-th
-  // point that comes, both in input order. Returns each point's nearest
+  // prefixes behind them otherwise. The j-th point that leaves takes the
+  // place, in `stage_removed`, of the j-th point that comes, both in input
+  // order. Returns each point's nearest
   // present neighbour then (see swap_among_neighbors).
   template <typename ConcurrencyTag>
   Array<Index> swap_within_level_above(Array<Index>& stage_removed)
