@@ -18,6 +18,7 @@
 // terms, the kept set is entropy_simplify_point_set's, and its mean distance
 // that of FILE's row of the default mode in the same cell.
 
+#include "bench_arguments.h"
 #include "bench_csv.h"
 #include "bench_common.h"
 #include "bench_inputs.h"
@@ -37,6 +38,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -355,31 +357,11 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
 
 int main(int argc, char** argv)
 {
-  std::string data, quality_file, out = ".";
-  bool smoke = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--data" && i + 1 < argc)
-      data = argv[++i];
-    else if (a == "--quality" && i + 1 < argc)
-      quality_file = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else if (a == "--smoke")
-      smoke = true;
-    else
-    {
-      std::cerr << "usage: bench_ablation --data DIR --quality FILE [--out DIR] [--smoke]\n";
-      return 2;
-    }
-  }
-  if (data.empty() || quality_file.empty())
-  {
-    std::cerr << "bench_ablation: give --data, the folder of CGAL's demo data, and --quality, run_benchmark's "
-                 "quality.csv\n";
+  const std::optional<bench::Section_arguments> arguments =
+    bench::section_arguments(argc, argv, "bench_ablation", true);
+  if (!arguments)
     return 2;
-  }
+  const auto& [data, out, quality_file, smoke] = *arguments;
   try
   {
     // the smoke run's smaller inputs are not those of quality.csv: its peers

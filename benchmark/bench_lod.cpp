@@ -22,6 +22,7 @@
 // are a permutation, and a level's prefix is the direct call's kept set.
 // Prints the tables of RESULTS.md's "Levels of detail" and writes lod.csv.
 
+#include "bench_arguments.h"
 #include "bench_common.h"
 #include "bench_inputs.h"
 #include "bench_machine.h"
@@ -36,6 +37,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -189,28 +191,10 @@ std::vector<Prefix_quality> measure_quality(const bench::Cloud& cloud)
 
 int main(int argc, char** argv)
 {
-  std::string data, out = ".";
-  bool smoke = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--data" && i + 1 < argc)
-      data = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else if (a == "--smoke")
-      smoke = true;
-    else
-    {
-      std::cerr << "usage: bench_lod --data DIR [--out DIR] [--smoke]\n";
-      return 2;
-    }
-  }
-  if (data.empty())
-  {
-    std::cerr << "bench_lod: give --data, the folder of CGAL's demo data\n";
+  const std::optional<bench::Section_arguments> arguments = bench::section_arguments(argc, argv, "bench_lod");
+  if (!arguments)
     return 2;
-  }
+  const auto& [data, out, quality, smoke] = *arguments;
   try
   {
     const std::string lion = data + "/meshes/lion.off";

@@ -106,7 +106,8 @@ inline void write_targets_ahead(std::ostream& md, const Report& r)
         "inputs at least 2.5 times the input's share of points near fandisk's sharp edges at 10 and 20% (1.7 at "
         "50%) and 1.6 times its share on the 1.2 mm replica's ball at 10%. The other labelled shares are reported "
         "without a target. Why the mean distance and the shares pull against each other: section \"Feature "
-        "emphasis against coverage\".\n\n";
+        "emphasis against coverage\"; what the point-to-plane error rewards on noisy inputs: section "
+        "\"Point-to-plane error and noise\".\n\n";
   ahead_group(md, r, groups.tuned, "### Inputs the mode was tuned on\n\n");
   ahead_group(md, r, groups.held_out, "### Held-out inputs\n\n");
   ahead_group(md, r, groups.held_out_anew, "### Inputs held out anew\n\n");

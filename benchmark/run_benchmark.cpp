@@ -16,13 +16,8 @@
 #include "bench_inputs.h"
 #include "bench_methods.h"
 #include "bench_metrics.h"
+#include "bench_peers.h"
 #include "bench_results_markdown.h"
-#ifdef ES_BENCH_WITH_PCL
-#include "bench_peers_pcl.h"
-#endif
-#ifdef ES_BENCH_WITH_OPEN3D
-#include "bench_peers_open3d.h"
-#endif
 
 #include <CGAL/pca_estimate_normals.h>
 
@@ -83,15 +78,8 @@ void write_points(const std::string& file, const Selection& s)
 std::vector<Method> methods_for(Method_context& context)
 {
   std::vector<Method> methods = all_methods(context);
-  std::vector<Method> peers;
-#ifdef ES_BENCH_WITH_PCL
-  peers = pcl_peers::methods(context);
+  const std::vector<Method> peers = optional_peer_methods(context);
   methods.insert(methods.end(), peers.begin(), peers.end());
-#endif
-#ifdef ES_BENCH_WITH_OPEN3D
-  peers = open3d_peers::methods(context);
-  methods.insert(methods.end(), peers.begin(), peers.end());
-#endif
   return methods;
 }
 
