@@ -37,6 +37,7 @@ struct Cloud
   std::vector<Point> points;
   std::vector<int> labels;
   double diagonal = 0.;
+  double range_noise = 0.; // a replica's: the standard deviation of its range noise
 };
 
 // What a method keeps: new points for WLOP, otherwise a subset of the input

@@ -53,6 +53,7 @@ inline Cloud replica(double noise, std::size_t scale_divisor = 1)
     c.labels.push_back(p.second);
   }
   c.diagonal = bounding_box_diagonal(c.points);
+  c.range_noise = noise;
   return c;
 }
 

@@ -13,19 +13,21 @@
 // - the kept noise: the RMS distance of the kept points to the input's own
 //   surface there, the PCA plane of their 30 nearest input points, over the
 //   same RMS for every input point. Above 1, a method keeps the points
-//   farthest from the surface; below 1, those nearest it (or, moving
-//   points, it smooths them);
+//   farthest from the surface (or, on a scan, near edges and corners);
+//   below 1, those nearest it (or, moving points, it smooths them);
 // - on the replicas, the same ratio against the true surface (the board's
-//   plane and the ball's sphere), and the noise floor: the input points' RMS
-//   distance to the true surface over the diagonal, the point-to-plane
-//   error of a simplification whose planes were the true surface.
+//   plane and the ball's sphere); the surface error, the input points' RMS
+//   distance to the true surface over the diagonal, the point-to-plane error
+//   of planes on it; and the point-to-plane error once the kept points are
+//   moved onto it, their layout unchanged.
 // Prints the section "Point-to-plane error and noise" of RESULTS.md and
 // writes every cell to noise.csv. With --smoke: the replicas divided in size
 // by 16, CGAL's peers only.
 // Invariants checked (the program fails otherwise): each method keeps
-// exactly the count asked for, or what its parameter search reached; the
-// replica's input noise against the true surface lies between 0.8 and 1.0
-// times its range noise, which runs along the scanner's rays.
+// exactly the count asked for, or what its parameter search reached below
+// it, at least 3 points; its measures are finite; the replica's input noise
+// against the true surface lies between 0.8 and 1.0 times its range noise,
+// which runs along the scanner's rays.
 
 #include "bench_arguments.h"
 #include "bench_common.h"
@@ -97,20 +99,33 @@ double rms_to_input_surface(const bench::Method_context& context, const std::vec
   return std::sqrt(sum / double(points.size()));
 }
 
-// The RMS distance of `points` to the replica's true surface: the nearer of
-// the board's plane and the ball's sphere.
-double rms_to_replica_surface(const std::vector<Point>& points)
+// `p` moved onto the replica's true surface, the nearer of the board's
+// plane and the ball's sphere (13 cm apart).
+Point onto_replica_surface(const Point& p)
 {
   const ES::Experiment_I_setup setup;
   const Point centre(setup.sphere_x, setup.sphere_y, setup.board_distance - setup.sphere_gap);
+  const double to_centre = std::sqrt(CGAL::squared_distance(p, centre));
+  if (std::abs(p.z() - setup.board_distance) <= std::abs(to_centre - setup.sphere_radius))
+    return Point(p.x(), p.y(), setup.board_distance);
+  return centre + (p - centre) * (setup.sphere_radius / to_centre);
+}
+
+double rms_to_replica_surface(const std::vector<Point>& points)
+{
   double sum = 0.;
   for (const Point& p : points)
-  {
-    const double to_board = p.z() - setup.board_distance;
-    const double to_ball = std::sqrt(CGAL::squared_distance(p, centre)) - setup.sphere_radius;
-    sum += (std::min)(to_board * to_board, to_ball * to_ball);
-  }
+    sum += CGAL::squared_distance(p, onto_replica_surface(p));
   return std::sqrt(sum / double(points.size()));
+}
+
+// The point-to-plane error of the kept points once moved onto the replica's
+// true surface: their layout unchanged, their offsets from it removed.
+double point_to_plane_on_surface(const Cloud& cloud, bench::Selection kept)
+{
+  for (Point& p : kept.points)
+    p = onto_replica_surface(p);
+  return bench::measure(cloud, kept, true, ES::Options()).point_to_plane;
 }
 
 struct Cell
@@ -118,7 +133,10 @@ struct Cell
   std::string input, method;
   double ratio;
   std::size_t count;
-  double point_to_plane, kept_noise, true_kept_noise, floor; // the last two NaN but on the replicas
+  double point_to_plane, kept_noise;
+  // on the replicas, NaN elsewhere: the kept noise against the true surface, the error with the kept points
+  // on it, and the error of planes on it (the input points' RMS distance to it), all over the diagonal
+  double true_kept_noise, point_to_plane_on_surface, surface_error;
 };
 
 // Spearman's rank correlation of two equally long series (no ties expected
@@ -144,16 +162,15 @@ double rank_correlation(const std::vector<double>& a, const std::vector<double>&
 
 std::vector<Cell> measure_input(const bench::Benchmark_input& in, bool smoke, std::ostream& log)
 {
-  const bool replica = !in.is_scan;
   const Cloud cloud = in.make();
+  const bool replica = cloud.range_noise > 0.;
   bench::Method_context context(cloud);
   const double input_noise = rms_to_input_surface(context, cloud.points);
   double true_input_noise = std::numeric_limits<double>::quiet_NaN();
   if (replica)
   {
     true_input_noise = rms_to_replica_surface(cloud.points);
-    const double range_noise = in.name == "replica_2mm" ? 0.002 : 0.0012;
-    if (!(true_input_noise > 0.8 * range_noise && true_input_noise <= range_noise))
+    if (!(true_input_noise > 0.8 * cloud.range_noise && true_input_noise <= cloud.range_noise))
       throw std::logic_error(in.name + ": the input's noise against the true surface, " +
                              std::to_string(true_input_noise) + ", is not within 0.8 to 1 times the range noise");
   }
@@ -165,17 +182,25 @@ std::vector<Cell> measure_input(const bench::Benchmark_input& in, bool smoke, st
       if (method.predicted_seconds && method.predicted_seconds(m) > skip_seconds)
         continue;
       const bench::Selection s = method.select(m);
-      if (s.points.size() != m && s.points.size() != s.count_before_trim)
-        throw std::logic_error(in.name + ", " + method.name + ": kept " + std::to_string(s.points.size()) +
-                               " points for " + std::to_string(m));
-      const bench::Quality q = bench::measure(cloud, s, replica, ES::Options());
-      Cell c{ in.name, method.name, ratio, s.points.size(), q.point_to_plane,
-              rms_to_input_surface(context, s.points) / input_noise, std::numeric_limits<double>::quiet_NaN(),
-              true_input_noise / cloud.diagonal };
+      const std::size_t kept = s.points.size();
+      if (kept != m && !(kept == s.count_before_trim && kept > 2 && kept < m))
+        throw std::logic_error(in.name + ", " + method.name + ": kept " + std::to_string(kept) + " points for " +
+                               std::to_string(m));
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      Cell c{ in.name, method.name, ratio, kept, bench::measure(cloud, s, replica, ES::Options()).point_to_plane,
+              rms_to_input_surface(context, s.points) / input_noise, nan, nan, nan };
       if (replica)
+      {
         c.true_kept_noise = rms_to_replica_surface(s.points) / true_input_noise;
+        c.point_to_plane_on_surface = point_to_plane_on_surface(cloud, s);
+        c.surface_error = true_input_noise / cloud.diagonal;
+      }
+      for (double v : { c.point_to_plane, c.kept_noise, replica ? c.true_kept_noise : 0.,
+                        replica ? c.point_to_plane_on_surface : 0. })
+        if (!std::isfinite(v))
+          throw std::logic_error(in.name + ", " + method.name + ": a measure is not finite");
       cells.push_back(c);
-      log << in.name << ' ' << ratio << "% " << method.name << ": point-to-plane " << q.point_to_plane
+      log << in.name << ' ' << ratio << "% " << method.name << ": point-to-plane " << c.point_to_plane
           << ", kept noise " << c.kept_noise << '\n';
     }
   return cells;
@@ -185,44 +210,56 @@ void write_csv(const std::string& file, const std::vector<Cell>& cells)
 {
   std::ofstream out(file);
   out.precision(10);
-  out << "input,method,percent,count,point_to_plane,kept_noise,true_kept_noise,noise_floor\n";
+  out << "input,method,percent,count,point_to_plane,kept_noise,true_kept_noise,point_to_plane_on_surface,"
+         "surface_error\n";
   for (const Cell& c : cells)
     out << c.input << ",\"" << c.method << "\"," << c.ratio << ',' << c.count << ',' << c.point_to_plane << ','
-        << c.kept_noise << ',' << c.true_kept_noise << ',' << c.floor << '\n';
+        << c.kept_noise << ',' << c.true_kept_noise << ',' << c.point_to_plane_on_surface << ',' << c.surface_error
+        << '\n';
   if (!out)
     throw std::runtime_error("cannot write " + file);
 }
 
-// One row per cell: the peer of least point-to-plane error, the default
-// mode, the peer that keeps the least noise, and the rank correlation.
-void write_section(std::ostream& md, const std::vector<Cell>& cells)
+// A cell's rows: the default mode and the peers, by method.
+struct Cell_rows
 {
-  md << "## Point-to-plane error and noise\n\n"
-     << "Produced by `bench_noise --data DIR --out DIR` (`bash benchmark/run.sh` runs it; every cell in "
-        "`results/noise.csv`). On the noisy inputs, the default mode and every peer library's simplifier at 10, "
-        "20 and 50% kept (WLOP where predicted to take at most 100 s, as in the quality tables). *Kept noise*: "
-        "the RMS distance of the kept points to the input's surface around them (the PCA plane of their "
-        << surface_points
-        << " nearest input points), over the same for all input points: above 1, a method keeps the points "
-           "farthest from the surface (or, on a scan, near its edges and corners, which also lie off such "
-           "planes); below 1, those nearest it, or, moving points, it smooths them. On the replicas, the true "
-           "surface is known: *truth* is the same ratio against it, and the *floor* is the input points' RMS "
-           "distance to it over the diagonal, the point-to-plane error a simplification would have if its "
-           "planes were the true surface. A likely cause of errors below the floor, not tested: an input point "
-           "is measured against a plane through kept points near it, which, when they lie off the surface, "
-           "tend to lie on its side. *Correlation*: Spearman's, across the methods of "
-           "the cell, between the point-to-plane error and the kept noise (-1: the noisier the kept points, the "
-           "lower the error).\n\n"
-     << "| input | kept | floor | best peer on point-to-plane: error / floor, kept noise (truth) | default mode: "
-        "error / best peer's, kept noise (truth) | least kept noise among peers: error / best peer's, kept noise "
-        "(truth) | correlation |\n|---|---:|---:|---|---|---|---:|\n";
-  const auto noise = [](const Cell& c) {
-    return bench::fixed(c.kept_noise, 2) + (std::isnan(c.true_kept_noise) ? "" : " (" + bench::fixed(c.true_kept_noise, 2) + ")");
-  };
-  int cells_shown = 0, best_noisier = 0, negative = 0, replica_cells = 0;
-  // on the replicas, the best peers below the floor that keep noisier points than the input's: their
-  // errors over the floor and their kept noise against the true surface
-  std::vector<double> below_floor_errors, below_floor_noises;
+  const Cell* ours = nullptr;
+  std::vector<const Cell*> peers;
+
+  const Cell* least_error() const
+  {
+    return *std::min_element(peers.begin(), peers.end(),
+                             [](const Cell* a, const Cell* b) { return a->point_to_plane < b->point_to_plane; });
+  }
+  const Cell* least_noise() const
+  {
+    return *std::min_element(peers.begin(), peers.end(),
+                             [](const Cell* a, const Cell* b) { return a->kept_noise < b->kept_noise; });
+  }
+  const Cell* peer(const std::string& method) const
+  {
+    for (const Cell* p : peers)
+      if (p->method == method)
+        return p;
+    return nullptr;
+  }
+  // Spearman's, across the default mode and the peers, of the error and the kept noise
+  double correlation() const
+  {
+    std::vector<double> errors{ ours->point_to_plane }, noises{ ours->kept_noise };
+    for (const Cell* p : peers)
+    {
+      errors.push_back(p->point_to_plane);
+      noises.push_back(p->kept_noise);
+    }
+    return rank_correlation(errors, noises);
+  }
+};
+
+// The cells with a default-mode row and at least one peer, in input and ratio order.
+std::vector<Cell_rows> cell_rows(const std::vector<Cell>& cells)
+{
+  std::vector<Cell_rows> rows;
   for (std::size_t first = 0; first < cells.size();)
   {
     std::size_t last = first;
@@ -230,62 +267,126 @@ void write_section(std::ostream& md, const std::vector<Cell>& cells)
       ++last;
     for (double ratio : ratios)
     {
-      std::vector<const Cell*> peers;
-      const Cell* ours = nullptr;
+      Cell_rows r;
       for (std::size_t i = first; i < last; ++i)
         if (cells[i].ratio == ratio && cells[i].method == "package default")
-          ours = &cells[i];
+          r.ours = &cells[i];
         else if (cells[i].ratio == ratio)
-          peers.push_back(&cells[i]);
-      if (!ours || peers.empty())
-        continue;
-      const Cell* best = *std::min_element(peers.begin(), peers.end(), [](const Cell* a, const Cell* b) {
-        return a->point_to_plane < b->point_to_plane;
-      });
-      const Cell* quietest = *std::min_element(peers.begin(), peers.end(), [](const Cell* a, const Cell* b) {
-        return a->kept_noise < b->kept_noise;
-      });
-      std::vector<double> errors{ ours->point_to_plane }, noises{ ours->kept_noise };
-      for (const Cell* p : peers)
-      {
-        errors.push_back(p->point_to_plane);
-        noises.push_back(p->kept_noise);
-      }
-      const double correlation = rank_correlation(errors, noises);
-      ++cells_shown;
-      best_noisier += best->kept_noise > 1.;
-      negative += correlation < 0.;
-      replica_cells += !std::isnan(best->floor);
-      if (best->point_to_plane < best->floor && best->true_kept_noise > 1.)
-      {
-        below_floor_errors.push_back(best->point_to_plane / best->floor);
-        below_floor_noises.push_back(best->true_kept_noise);
-      }
-      md << "| " << ours->input << " | " << ratio << "% | "
-         << (std::isnan(ours->floor) ? std::string("") : bench::fixed(ours->floor, 6)) << " | " << best->method
-         << ": " << (std::isnan(best->floor) ? std::string("") : bench::fixed(best->point_to_plane / best->floor, 3) + ", ")
-         << noise(*best) << " | " << bench::fixed(ours->point_to_plane / best->point_to_plane, 3) << ", "
-         << noise(*ours) << " | " << quietest->method << ": "
-         << bench::fixed(quietest->point_to_plane / best->point_to_plane, 3) << ", " << noise(*quietest) << " | "
-         << bench::fixed(correlation, 2) << " |\n";
+          r.peers.push_back(&cells[i]);
+      if (r.ours && !r.peers.empty())
+        rows.push_back(r);
     }
     first = last;
   }
-  md << "\nIn " << best_noisier << " of " << cells_shown
-     << " cells the peer of least point-to-plane error keeps more noise than the input has (kept noise above 1); "
-        "the correlation is negative in "
-     << negative << " of " << cells_shown << ".";
-  const auto range = [](const std::vector<double>& v, int digits) {
-    const auto [low, high] = std::minmax_element(v.begin(), v.end());
-    return bench::fixed(*low, digits) + " to " + bench::fixed(*high, digits);
-  };
-  if (!below_floor_errors.empty())
-    md << " On the replicas, the peer of least error is below the noise floor with kept points noisier than the "
-          "input in "
-       << below_floor_errors.size() << " of " << replica_cells << " cells: " << range(below_floor_errors, 3)
-       << " times the floor, its kept points " << range(below_floor_noises, 2)
-       << " times as far from the true surface as the input points.";
+  return rows;
+}
+
+std::string range(const std::vector<double>& v, int digits)
+{
+  const auto [low, high] = std::minmax_element(v.begin(), v.end());
+  return bench::fixed(*low, digits) + " to " + bench::fixed(*high, digits);
+}
+
+// On a replica: the error over the surface error, then with the kept points
+// moved onto the true surface, and the kept noise against it.
+std::string against_the_surface(const Cell* c, bool named = true)
+{
+  if (!c)
+    return "";
+  return (named ? c->method + ": " : std::string()) + bench::fixed(c->point_to_plane / c->surface_error, 3) + " → " +
+         bench::fixed(c->point_to_plane_on_surface / c->surface_error, 3) + ", " + bench::fixed(c->true_kept_noise, 2);
+}
+
+void write_replica_table(std::ostream& md, const std::vector<Cell_rows>& rows)
+{
+  md << "### On the replicas, against the true surface\n\n"
+     << "Each entry: the method's point-to-plane error over the *surface error* (the error of planes on the true "
+        "surface: the input points' RMS distance to it over the diagonal), then (→) the same with its kept "
+        "points moved onto the true surface, their layout unchanged, and the kept points' RMS distance to the "
+        "true surface over the input points'.\n\n"
+     << "| input | kept | surface error | peer of least error | default mode | CGAL random |\n"
+        "|---|---:|---:|---|---|---|\n";
+  std::vector<double> errors, on_surface, random_errors, random_noise, best_errors, best_noise;
+  for (const Cell_rows& r : rows)
+  {
+    if (std::isnan(r.ours->surface_error))
+      continue;
+    const Cell* best = r.least_error();
+    const Cell* random = r.peer("CGAL random");
+    md << "| " << r.ours->input << " | " << r.ours->ratio << "% | " << bench::fixed(r.ours->surface_error, 6)
+       << " | " << against_the_surface(best) << " | " << against_the_surface(r.ours, false) << " | "
+       << against_the_surface(random, false) << " |\n";
+    for (const Cell* c : r.peers)
+    {
+      errors.push_back(c->point_to_plane / c->surface_error);
+      on_surface.push_back(c->point_to_plane_on_surface / c->surface_error);
+    }
+    errors.push_back(r.ours->point_to_plane / r.ours->surface_error);
+    on_surface.push_back(r.ours->point_to_plane_on_surface / r.ours->surface_error);
+    if (random)
+    {
+      random_errors.push_back(random->point_to_plane / random->surface_error);
+      random_noise.push_back(random->true_kept_noise);
+    }
+    if (best->true_kept_noise > 1.)
+    {
+      best_errors.push_back(best->point_to_plane / best->surface_error);
+      best_noise.push_back(best->true_kept_noise);
+    }
+  }
+  if (errors.empty())
+    return;
+  md << "\nOver every method and cell, the error is " << range(errors, 3)
+     << " times the surface error, and with the kept points on the true surface " << range(on_surface, 3) << ".";
+  if (!random_errors.empty())
+    md << " CGAL's random simplification, whose kept points lie as far from the surface as the input's ("
+       << range(random_noise, 2) << " times), is " << range(random_errors, 3) << " times it.";
+  if (!best_errors.empty())
+    md << " In " << best_errors.size()
+       << " cells the peer of least error keeps points farther from the surface than the input's ("
+       << range(best_noise, 2) << " times), and is " << range(best_errors, 3) << " times it.";
   md << "\n\n";
+}
+
+void write_all_inputs_table(std::ostream& md, const std::vector<Cell_rows>& rows)
+{
+  md << "### On every noisy input, against the input's own surface\n\n"
+     << "*Kept noise*: the RMS distance of the kept points to the PCA plane of their " << surface_points
+     << " nearest input points, over the same for every input point; on a scan, edges and corners raise it too. "
+        "*ρ*: Spearman's correlation, across the cell's methods (the default mode and the peers that ran), of "
+        "the point-to-plane error and the kept noise.\n\n"
+     << "| input | kept | peer of least error: kept noise | default mode: error / that peer's, kept noise | "
+        "peer of least kept noise: error / least, kept noise | ρ |\n|---|---:|---|---|---|---:|\n";
+  int noisier = 0, negative = 0;
+  for (const Cell_rows& r : rows)
+  {
+    const Cell* best = r.least_error();
+    const Cell* quietest = r.least_noise();
+    const double rho = r.correlation();
+    noisier += best->kept_noise > 1.;
+    negative += rho < 0.;
+    md << "| " << r.ours->input << " | " << r.ours->ratio << "% | " << best->method << ": "
+       << bench::fixed(best->kept_noise, 2) << " | " << bench::fixed(r.ours->point_to_plane / best->point_to_plane, 3)
+       << ", " << bench::fixed(r.ours->kept_noise, 2) << " | " << quietest->method << ": "
+       << bench::fixed(quietest->point_to_plane / best->point_to_plane, 3) << ", "
+       << bench::fixed(quietest->kept_noise, 2) << " | " << bench::fixed(rho, 2) << " |\n";
+  }
+  md << "\nThe peer of least error has a kept noise above 1 in " << noisier << " of " << rows.size()
+     << " cells; ρ is below 0 in " << negative << " of " << rows.size() << ".\n\n";
+}
+
+void write_section(std::ostream& md, const std::vector<Cell>& cells)
+{
+  md << "## Point-to-plane error and noise\n\n"
+     << "Produced by `bench_noise --data DIR --out DIR` (`bash benchmark/run.sh` runs it; every cell in "
+        "`results/noise.csv`). On the noisy inputs, the default mode and every peer library's simplifier at 10, "
+        "20 and 50% kept (WLOP where predicted to take at most 100 s, as in the quality tables; CGAL's hierarchy "
+        "keeps fewer points than asked at 50%, as there). On a noisy input, the point-to-plane error can fall "
+        "below that of planes on the true surface: planes through kept points near an input point follow the "
+        "noise there. These tables measure how much, and how it goes with the noise the kept points keep.\n\n";
+  const std::vector<Cell_rows> rows = cell_rows(cells);
+  write_replica_table(md, rows);
+  write_all_inputs_table(md, rows);
 }
 
 } // namespace
