@@ -352,8 +352,8 @@ void write_all_inputs_table(std::ostream& md, const std::vector<Cell_rows>& rows
 {
   md << "### On every noisy input, against the input's own surface\n\n"
      << "*Kept noise*: the RMS distance of the kept points to the PCA plane of their " << surface_points
-     << " nearest input points, over the same for every input point; on a scan, edges and corners raise it too. "
-        "*ρ*: Spearman's correlation, across the cell's methods (the default mode and the peers that ran), of "
+     << " nearest input points, over the same for every input point; on a scan, edges and corners can raise it "
+        "too. *ρ*: Spearman's correlation, across the cell's methods (the default mode and the peers that ran), of "
         "the point-to-plane error and the kept noise.\n\n"
      << "| input | kept | peer of least error: kept noise | default mode: error / that peer's, kept noise | "
         "peer of least kept noise: error / least, kept noise | ρ |\n|---|---:|---|---|---|---:|\n";
@@ -382,8 +382,9 @@ void write_section(std::ostream& md, const std::vector<Cell>& cells)
         "`results/noise.csv`). On the noisy inputs, the default mode and every peer library's simplifier at 10, "
         "20 and 50% kept (WLOP where predicted to take at most 100 s, as in the quality tables; CGAL's hierarchy "
         "keeps fewer points than asked at 50%, as there). On a noisy input, the point-to-plane error can fall "
-        "below that of planes on the true surface: planes through kept points near an input point follow the "
-        "noise there. These tables measure how much, and how it goes with the noise the kept points keep.\n\n";
+        "below that of planes on the true surface; a likely mechanism, not measured directly: planes through kept "
+        "points near an input point follow the noise there. These tables measure how much, and how it goes "
+        "with the noise the kept points keep.\n\n";
   const std::vector<Cell_rows> rows = cell_rows(cells);
   write_replica_table(md, rows);
   write_all_inputs_table(md, rows);
