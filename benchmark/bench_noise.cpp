@@ -18,8 +18,8 @@
 // - on the replicas, the same ratio against the true surface (the board's
 //   plane and the ball's sphere); the surface error, the input points' RMS
 //   distance to the true surface over the diagonal, the point-to-plane error
-//   of planes on it; and the point-to-plane error once the kept points are
-//   moved onto it, their layout unchanged.
+//   of planes on it; and the point-to-plane error and the mean distance
+//   once the kept points are moved onto it, their layout unchanged.
 // Prints the section "Point-to-plane error and noise" of RESULTS.md and
 // writes every cell to noise.csv. With --smoke: the replicas divided in size
 // by 16, CGAL's peers only.
@@ -119,13 +119,13 @@ double rms_to_replica_surface(const std::vector<Point>& points)
   return std::sqrt(sum / double(points.size()));
 }
 
-// The point-to-plane error of the kept points once moved onto the replica's
-// true surface: their layout unchanged, their offsets from it removed.
-double point_to_plane_on_surface(const Cloud& cloud, bench::Selection kept)
+// The quality of the kept points once moved onto the replica's true
+// surface: their layout unchanged, their offsets from it removed.
+bench::Quality quality_on_surface(const Cloud& cloud, bench::Selection kept)
 {
   for (Point& p : kept.points)
     p = onto_replica_surface(p);
-  return bench::measure(cloud, kept, true, ES::Options()).point_to_plane;
+  return bench::measure(cloud, kept, true, ES::Options());
 }
 
 struct Cell
@@ -133,10 +133,10 @@ struct Cell
   std::string input, method;
   double ratio;
   std::size_t count;
-  double point_to_plane, kept_noise;
-  // on the replicas, NaN elsewhere: the kept noise against the true surface, the error with the kept points
-  // on it, and the error of planes on it (the input points' RMS distance to it), all over the diagonal
-  double true_kept_noise, point_to_plane_on_surface, surface_error;
+  double point_to_plane, mean, kept_noise;
+  // on the replicas, NaN elsewhere: the kept noise against the true surface; the error and the mean
+  // distance with the kept points on it; the error of planes on it (the input points' RMS distance to it)
+  double true_kept_noise, point_to_plane_on_surface, mean_on_surface, surface_error;
 };
 
 // Spearman's rank correlation of two equally long series (no ties expected
@@ -187,16 +187,19 @@ std::vector<Cell> measure_input(const bench::Benchmark_input& in, bool smoke, st
         throw std::logic_error(in.name + ", " + method.name + ": kept " + std::to_string(kept) + " points for " +
                                std::to_string(m));
       const double nan = std::numeric_limits<double>::quiet_NaN();
-      Cell c{ in.name, method.name, ratio, kept, bench::measure(cloud, s, replica, ES::Options()).point_to_plane,
-              rms_to_input_surface(context, s.points) / input_noise, nan, nan, nan };
+      const bench::Quality q = bench::measure(cloud, s, replica, ES::Options());
+      Cell c{ in.name, method.name, ratio, kept, q.point_to_plane, q.mean,
+              rms_to_input_surface(context, s.points) / input_noise, nan, nan, nan, nan };
       if (replica)
       {
         c.true_kept_noise = rms_to_replica_surface(s.points) / true_input_noise;
-        c.point_to_plane_on_surface = point_to_plane_on_surface(cloud, s);
+        const bench::Quality on_surface = quality_on_surface(cloud, s);
+        c.point_to_plane_on_surface = on_surface.point_to_plane;
+        c.mean_on_surface = on_surface.mean;
         c.surface_error = true_input_noise / cloud.diagonal;
       }
-      for (double v : { c.point_to_plane, c.kept_noise, replica ? c.true_kept_noise : 0.,
-                        replica ? c.point_to_plane_on_surface : 0. })
+      for (double v : { c.point_to_plane, c.mean, c.kept_noise, replica ? c.true_kept_noise : 0.,
+                        replica ? c.point_to_plane_on_surface : 0., replica ? c.mean_on_surface : 0. })
         if (!std::isfinite(v))
           throw std::logic_error(in.name + ", " + method.name + ": a measure is not finite");
       cells.push_back(c);
@@ -210,12 +213,12 @@ void write_csv(const std::string& file, const std::vector<Cell>& cells)
 {
   std::ofstream out(file);
   out.precision(10);
-  out << "input,method,percent,count,point_to_plane,kept_noise,true_kept_noise,point_to_plane_on_surface,"
-         "surface_error\n";
+  out << "input,method,percent,count,point_to_plane,mean,kept_noise,true_kept_noise,point_to_plane_on_surface,"
+         "mean_on_surface,surface_error\n";
   for (const Cell& c : cells)
     out << c.input << ",\"" << c.method << "\"," << c.ratio << ',' << c.count << ',' << c.point_to_plane << ','
-        << c.kept_noise << ',' << c.true_kept_noise << ',' << c.point_to_plane_on_surface << ',' << c.surface_error
-        << '\n';
+        << c.mean << ',' << c.kept_noise << ',' << c.true_kept_noise << ',' << c.point_to_plane_on_surface << ','
+        << c.mean_on_surface << ',' << c.surface_error << '\n';
   if (!out)
     throw std::runtime_error("cannot write " + file);
 }
@@ -226,15 +229,11 @@ struct Cell_rows
   const Cell* ours = nullptr;
   std::vector<const Cell*> peers;
 
-  const Cell* least_error() const
+  // the peer of least `measure`
+  const Cell* least(double Cell::*measure) const
   {
     return *std::min_element(peers.begin(), peers.end(),
-                             [](const Cell* a, const Cell* b) { return a->point_to_plane < b->point_to_plane; });
-  }
-  const Cell* least_noise() const
-  {
-    return *std::min_element(peers.begin(), peers.end(),
-                             [](const Cell* a, const Cell* b) { return a->kept_noise < b->kept_noise; });
+                             [measure](const Cell* a, const Cell* b) { return a->*measure < b->*measure; });
   }
   const Cell* peer(const std::string& method) const
   {
@@ -311,7 +310,7 @@ void write_replica_table(std::ostream& md, const std::vector<Cell_rows>& rows)
   {
     if (std::isnan(r.ours->surface_error))
       continue;
-    const Cell* best = r.least_error();
+    const Cell* best = r.least(&Cell::point_to_plane);
     const Cell* random = r.peer("CGAL random");
     md << "| " << r.ours->input << " | " << r.ours->ratio << "% | " << bench::fixed(r.ours->surface_error, 6)
        << " | " << against_the_surface(best) << " | " << against_the_surface(r.ours, false) << " | "
@@ -348,6 +347,35 @@ void write_replica_table(std::ostream& md, const std::vector<Cell_rows>& rows)
   md << "\n\n";
 }
 
+// The mean distance on the replicas, as it is and with every method's kept
+// points on the true surface: what their layout gives, without the noise.
+void write_replica_mean_table(std::ostream& md, const std::vector<Cell_rows>& rows)
+{
+  md << "### The mean distance on the replicas\n\n"
+     << "The default mode's mean distance over the best peer's, as in the quality tables, then with every "
+        "method's kept points moved onto the true surface, their layout unchanged (the input unchanged).\n\n"
+     << "| input | kept | peer of least mean distance | default mode / that peer | on the surface: peer of least "
+        "mean distance | default mode / that peer |\n|---|---:|---|---:|---|---:|\n";
+  int cells = 0, ahead = 0, ahead_on_surface = 0;
+  for (const Cell_rows& r : rows)
+  {
+    if (std::isnan(r.ours->surface_error))
+      continue;
+    const Cell* best = r.least(&Cell::mean);
+    const Cell* best_on_surface = r.least(&Cell::mean_on_surface);
+    const double ratio = r.ours->mean / best->mean;
+    const double on_surface = r.ours->mean_on_surface / best_on_surface->mean_on_surface;
+    ++cells;
+    ahead += ratio <= 1.;
+    ahead_on_surface += on_surface <= 1.;
+    md << "| " << r.ours->input << " | " << r.ours->ratio << "% | " << best->method << " | " << bench::fixed(ratio, 3)
+       << " | " << best_on_surface->method << " | " << bench::fixed(on_surface, 3) << " |\n";
+  }
+  if (cells > 0)
+    md << "\nThe default mode's mean distance is at most the best peer's in " << ahead << " of " << cells
+       << " cells, and in " << ahead_on_surface << " with the kept points on the true surface.\n\n";
+}
+
 void write_all_inputs_table(std::ostream& md, const std::vector<Cell_rows>& rows)
 {
   md << "### On every noisy input, against the input's own surface\n\n"
@@ -360,8 +388,8 @@ void write_all_inputs_table(std::ostream& md, const std::vector<Cell_rows>& rows
   int noisier = 0, negative = 0;
   for (const Cell_rows& r : rows)
   {
-    const Cell* best = r.least_error();
-    const Cell* quietest = r.least_noise();
+    const Cell* best = r.least(&Cell::point_to_plane);
+    const Cell* quietest = r.least(&Cell::kept_noise);
     const double rho = r.correlation();
     noisier += best->kept_noise > 1.;
     negative += rho < 0.;
@@ -387,6 +415,7 @@ void write_section(std::ostream& md, const std::vector<Cell>& cells)
         "with the noise the kept points keep.\n\n";
   const std::vector<Cell_rows> rows = cell_rows(cells);
   write_replica_table(md, rows);
+  write_replica_mean_table(md, rows);
   write_all_inputs_table(md, rows);
 }
 
