@@ -5,7 +5,7 @@
 # "Scale" (bench_scale, 100k to 10M points, about 7 to 15 minutes), "Levels of
 # detail" (bench_lod, about 2 minutes), "What each term contributes"
 # (bench_ablation, about 4 minutes) and "Point-to-plane error and noise"
-# (bench_noise, about 3 minutes) of RESULTS.md. With --quick: smaller
+# (bench_noise, about 5 minutes) of RESULTS.md. With --quick: smaller
 # inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.
