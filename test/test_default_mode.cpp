@@ -321,11 +321,20 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
 
 namespace {
 
-// The points present after the library's coverage swaps, by input position,
-// each point's `scale` given by input position.
+// What the library's coverage swaps leave, by input position: the points
+// present, and each point's nearest present point.
+struct Swapped
+{
+  std::vector<bool> present;
+  std::vector<std::size_t> nearest;
+  bool operator==(const Swapped& other) const { return present == other.present && nearest == other.nearest; }
+};
+
+// The library's coverage swaps, each point's `scale` given by input
+// position.
 template <typename ConcurrencyTag>
-std::vector<bool> swapped_by_the_library(const std::vector<Point>& points, const std::vector<bool>& present,
-                                         std::size_t swaps, const std::vector<double>& scale)
+Swapped swapped_by_the_library(const std::vector<Point>& points, const std::vector<bool>& present, std::size_t swaps,
+                               const std::vector<double>& scale)
 {
   const ESI::Indexed_points indexed =
     ESI::sort_spatially<ConcurrencyTag>(ESI::Array<ESI::Working_point>(points.begin(), points.end()));
@@ -336,11 +345,23 @@ std::vector<bool> swapped_by_the_library(const std::vector<Point>& points, const
     flags[i] = present[indexed.input_position[i]];
     scale_of[i] = scale[indexed.input_position[i]];
   }
-  ESI::swap_farthest_for_crowded<ConcurrencyTag>(indexed, flags, swaps, scale_of);
-  std::vector<bool> result(points.size());
+  const ESI::Array<ESI::Index> site = ESI::swap_farthest_for_crowded<ConcurrencyTag>(indexed, flags, swaps, scale_of);
+  Swapped result{ std::vector<bool>(points.size()), std::vector<std::size_t>(points.size()) };
   for (std::size_t i = 0; i < points.size(); ++i)
-    result[indexed.input_position[i]] = flags[i] != 0;
+  {
+    result.present[indexed.input_position[i]] = flags[i] != 0;
+    result.nearest[indexed.input_position[i]] = indexed.input_position[site[i]];
+  }
   return result;
+}
+
+// Each point's nearest present point, by brute force (ties by input position).
+std::vector<std::size_t> nearest_present_points(const std::vector<Point>& points, const std::vector<bool>& present)
+{
+  std::vector<std::size_t> nearest(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p)
+    nearest[p] = reference::nearest_present(points, present, p);
+  return nearest;
 }
 
 double greatest_squared_distance(const std::vector<Point>& points, const std::vector<bool>& present)
@@ -380,10 +401,12 @@ TEST_CASE("Default mode: the coverage swaps equal the reference's, and never wid
         CHECK(expected != present);
         CHECK(std::count(expected.begin(), expected.end(), true) == std::count(present.begin(), present.end(), true));
         CHECK(greatest_squared_distance(points, expected) <= greatest_squared_distance(points, present));
-        CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps, scale) == expected);
+        // the nearest present points too: a ranking's levels of detail start from them
+        const Swapped expected_with_nearest{ expected, nearest_present_points(points, expected) };
+        CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps, scale) == expected_with_nearest);
         CHECK(test_parallel::on_two_threads_or_more([&] {
                 return swapped_by_the_library<test_parallel::Parallel_tag>(points, present, swaps, scale);
-              }) == expected);
+              }) == expected_with_nearest);
       }
 }
 
@@ -398,7 +421,9 @@ TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[
   std::vector<bool> expected = present;
   reference::swap_farthest_for_crowded(line, expected, 3, unit);
   CHECK(expected == present);
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, present, 3, unit) == present);
+  // each point's nearest present point too, ties to the lower input position
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, present, 3, unit) ==
+        Swapped{ present, { 0, 0, 2, 2, 4 } });
   // Two crowded points (0 and 1) and a gap: the farthest point (5) comes in
   // and the most crowded (0) leaves for it. A second swap would bring 4 in,
   // but 1 is no longer crowded and 3 cannot leave: the swaps end there.
@@ -417,16 +442,18 @@ TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[
     std::vector<bool> swapped = before;
     reference::swap_farthest_for_crowded(gap, swapped, swaps, unit);
     CHECK(swapped == after);
-    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, unit) == after);
+    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, unit) ==
+          Swapped{ after, { 1, 1, 1, 3, 3, 5 } });
     swapped = before;
     reference::swap_farthest_for_crowded(gap, swapped, swaps, halved);
     CHECK(swapped == after_halved);
-    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, halved) == after_halved);
+    CHECK(swapped_by_the_library<CGAL::Sequential_tag>(gap, before, swaps, halved) ==
+          Swapped{ after_halved, { 0, 0, 0, 3, 3, 5 } });
   }
   // Every point present, or a single one: no swap.
   const std::vector<bool> all(5, true), one = { false, false, true, false, false };
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, all, 3, unit) == all);
-  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, one, 3, unit) == one);
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, all, 3, unit) == Swapped{ all, { 0, 1, 2, 3, 4 } });
+  CHECK(swapped_by_the_library<CGAL::Sequential_tag>(line, one, 3, unit) == Swapped{ one, { 2, 2, 2, 2, 2 } });
 }
 
 namespace {

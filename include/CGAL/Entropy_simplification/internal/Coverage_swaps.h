@@ -516,22 +516,34 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 }
 
 // The coverage swaps of a direct call (see swap_in_turn), among all the
-// points.
+// points. Returns each point's nearest present point after the swaps (ties
+// by input position): itself when present, none when no point is. The
+// levels of detail below a ranking's level start from them: searched anew,
+// they took about a third of what the levels add to the level's direct
+// call (1,000,000 lion samples, level 1%, without threads: 104 ms, against
+// 220 to 230 for the 11 boundaries below).
 template <typename ConcurrencyTag>
-void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
-                               const Array<double>& scale)
+Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
+                                       const Array<double>& scale)
 {
   Array<Index> sites;
   for (Index i = 0; i < Index(points.size()); ++i)
     if (present[i])
       sites.push_back(i);
-  if (sites.size() < 2 || sites.size() == points.size() || swaps == 0)
-    return;
+  if (sites.size() == points.size())
+    return sites;
+  Array<Index> site(points.size(), none_index);
+  if (sites.empty())
+    return site;
   // the present points' own tree serves the first searches, and goes
   Array<Neighbor> crowded(sites.size());
-  Array<Index> site(points.size());
   {
     const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
+    for_each_index<ConcurrencyTag>(
+      points.size(), [&](std::size_t i) { site[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
+      [](std::size_t) { return true; });
+    if (sites.size() < 2 || swaps == 0)
+      return site;
     for_each_index<ConcurrencyTag>(
       sites.size(),
       [&](std::size_t r) {
@@ -540,14 +552,12 @@ void swap_farthest_for_crowded(const Indexed_points& points, Array<char>& presen
           crowding_entry(points, scale, s, squared_distance(points.points[s], points.points[tree.nearest_one(s)]));
       },
       [](std::size_t) { return true; });
-    for_each_index<ConcurrencyTag>(
-      points.size(), [&](std::size_t i) { site[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
-      [](std::size_t) { return true; });
   }
   Tree_search search(points, present, site, ConcurrencyTag());
   Nearest_present<Tree_search> nearest(points, present, std::move(search), std::move(site), heap_size(swaps));
   Crowding_order order(std::move(crowded));
   swap_in_turn(nearest, order, scale, swaps);
+  return nearest.release_sites();
 }
 
 // The coverage swaps at a ranking's level boundary (see swap_in_turn, and

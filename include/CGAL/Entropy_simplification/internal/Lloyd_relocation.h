@@ -187,26 +187,35 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
   return present;
 }
 
+// What a relocation changed: the pairs (point no longer present, point
+// present instead), both taken in input order; and each point's nearest
+// present point once relocated, when the coverage swaps found them, or
+// nothing.
+struct Relocation
+{
+  Array<std::pair<Index, Index> > swaps;
+  Array<Index> site;
+};
+
 // A relaxation in Lloyd's manner restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
 // cell keeps its median (see cell_medians, and `terms`); then, with
 // `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count), each
 // point's crowding measured against its `scale`. The count does not change.
-// Returns the pairs (point no longer present, point present instead), both
-// taken in input order.
 template <typename ConcurrencyTag>
-Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& points, Array<char>& present,
-                                                      int iterations, const Default_mode_terms& terms,
-                                                      const Array<double>& scale)
+Relocation relocate_within_input(const Indexed_points& points, Array<char>& present, int iterations,
+                                 const Default_mode_terms& terms, const Array<double>& scale)
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
+  Relocation relocation;
   if (terms.coverage_swaps)
   {
     const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), char(1)));
-    swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale);
+    relocation.site =
+      swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale);
   }
 
   Array<Index> gone, come;
@@ -217,10 +226,9 @@ Array<std::pair<Index, Index> > relocate_within_input(const Indexed_points& poin
     if (!before[i] && present[i])
       come.push_back(i);
   }
-  Array<std::pair<Index, Index> > swaps;
   for (std::size_t j = 0; j < gone.size(); ++j)
-    swaps.emplace_back(gone[j], come[j]);
-  return swaps;
+    relocation.swaps.emplace_back(gone[j], come[j]);
+  return relocation;
 }
 
 } // namespace internal

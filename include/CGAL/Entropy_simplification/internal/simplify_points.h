@@ -79,18 +79,22 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
 
 // The relocation that ends the default mode, with the `terms` switched on,
 // on the `scale` of each point. A relocated point takes the place, in the
-// removal order, of the point that replaces it.
+// removal order, of the point that replaces it. Returns each point's
+// nearest present point once relocated, when the relocation found them
+// (see Relocation), or nothing.
 template <typename ConcurrencyTag>
-void relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
-              const Array<double>& scale)
+Array<Index> relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
+                      const Array<double>& scale)
 {
   Array<char> present = present_after(run, points.size());
   Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
-  for (const auto& swap : relocate_within_input<ConcurrencyTag>(
-         points, present, terms.relocation ? relocation_iterations : 0, terms, scale))
+  Relocation relocation =
+    relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms, scale);
+  for (const auto& swap : relocation.swaps)
     run.removed[rank[swap.second]] = swap.first;
+  return std::move(relocation.site);
 }
 
 // For each point, the present point nearest it (ties by input position):
@@ -110,15 +114,17 @@ Array<Index> nearest_present_points(const Indexed_points& points, const Array<ch
 // Orders the points a default-mode run kept, once relocated: the
 // elimination goes on among them down to one point, which no removal
 // follows, its stages ending at the level boundaries below, each relocated
-// (see Level_cells) from the cells of the kept points. The callback can
-// stop it: it receives the fraction done when the run removed nothing (no
-// level), as run_engine() does, and 1 otherwise.
+// (see Level_cells) from the cells of the kept points, `site` holding each
+// point's nearest kept point, or nothing when they are to be searched. The
+// callback can stop it: it receives the fraction done when the run removed
+// nothing (no level), as run_engine() does, and 1 otherwise.
 template <typename ConcurrencyTag>
 bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
-                        const std::function<bool(double)>& callback)
+                        Array<Index> site, const std::function<bool(double)>& callback)
 {
   const Array<char> present = present_after(run, points.size());
-  engine.relocate_level_boundaries(nearest_present_points<ConcurrencyTag>(points, present));
+  engine.relocate_level_boundaries(site.empty() ? nearest_present_points<ConcurrencyTag>(points, present)
+                                                : std::move(site));
   engine.set_present(present);
   const bool whole_run = run.removed.empty();
   const std::size_t removals = points.size() - run.removed.size() - 1;
@@ -189,10 +195,13 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
+  Array<Index> site; // each point's nearest kept point, when the relocation found them
   if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
-  if (through && !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, callback)))
+    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
+  if (through &&
+      !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
     return std::nullopt;
+  Array<Index>().swap(site); // a direct call's are not needed: their memory goes back first
   return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
 }
 
