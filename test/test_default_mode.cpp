@@ -355,15 +355,6 @@ Swapped swapped_by_the_library(const std::vector<Point>& points, const std::vect
   return result;
 }
 
-// Each point's nearest present point, by brute force (ties by input position).
-std::vector<std::size_t> nearest_present_points(const std::vector<Point>& points, const std::vector<bool>& present)
-{
-  std::vector<std::size_t> nearest(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p)
-    nearest[p] = reference::nearest_present(points, present, p);
-  return nearest;
-}
-
 double greatest_squared_distance(const std::vector<Point>& points, const std::vector<bool>& present)
 {
   double greatest = 0.;
@@ -402,7 +393,7 @@ TEST_CASE("Default mode: the coverage swaps equal the reference's, and never wid
         CHECK(std::count(expected.begin(), expected.end(), true) == std::count(present.begin(), present.end(), true));
         CHECK(greatest_squared_distance(points, expected) <= greatest_squared_distance(points, present));
         // the nearest present points too: a ranking's levels of detail start from them
-        const Swapped expected_with_nearest{ expected, nearest_present_points(points, expected) };
+        const Swapped expected_with_nearest{ expected, reference::cells_of_present(points, expected) };
         CHECK(swapped_by_the_library<CGAL::Sequential_tag>(points, present, swaps, scale) == expected_with_nearest);
         CHECK(test_parallel::on_two_threads_or_more([&] {
                 return swapped_by_the_library<test_parallel::Parallel_tag>(points, present, swaps, scale);

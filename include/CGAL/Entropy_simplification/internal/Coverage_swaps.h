@@ -244,13 +244,12 @@ public:
                         m_neighbors.begin() + std::ptrdiff_t(m_first[x + 1]));
   }
 
-  // The members of the cell of `y`, `site` holding each point's present
-  // point: `y` itself among them unless a point at a distance of 0 took it.
+  // The members of the cell of the present point `y`, `site` holding each
+  // point's present point: `y` itself, and its neighbours whose present
+  // point it is.
   Array<Index> members(Index y, const Array<Index>& site) const
   {
-    Array<Index> result;
-    if (site[y] == y)
-      result.push_back(y);
+    Array<Index> result{ y };
     for (std::size_t e = m_first[y]; e < m_first[y + 1]; ++e)
       if (site[m_neighbors[e]] == y)
         result.push_back(m_neighbors[e]);
@@ -331,7 +330,11 @@ public:
   }
 
   // Makes the farthest point `x` present: it takes into its cell the
-  // points nearer it than to their present points.
+  // points not present nearer it than to their present points. A present
+  // point stays in its own cell even when `x` lies at a distance of 0 from
+  // it (two distinct points whose squared distance underflows) with a lower
+  // input position, so that each present point is its own site, as the
+  // levels of detail that start from the sites require.
   void make_present(Index x)
   {
     const Array<Index> near = m_search.may_move_to(x, nearest(x).squared_distance);
@@ -339,7 +342,7 @@ public:
     m_search.made_present(x);
     move(x, x);
     for (Index p : near)
-      if (neighbor(p, x) < nearest(p))
+      if (!m_present[p] && neighbor(p, x) < nearest(p))
         move(p, x);
   }
 
@@ -521,7 +524,7 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 // levels of detail below a ranking's level start from them: searched anew,
 // they took about a third of what the levels add to the level's direct
 // call (1,000,000 lion samples, level 1%, without threads: 104 ms, against
-// 220 to 230 for the 11 boundaries below).
+// 215 to 232 for the 11 boundaries below).
 template <typename ConcurrencyTag>
 Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
                                        const Array<double>& scale)
@@ -536,7 +539,7 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
   if (sites.empty())
     return site;
   // the present points' own tree serves the first searches, and goes
-  Array<Neighbor> crowded(sites.size());
+  Array<Neighbor> crowded;
   {
     const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
     for_each_index<ConcurrencyTag>(
@@ -544,6 +547,7 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
       [](std::size_t) { return true; });
     if (sites.size() < 2 || swaps == 0)
       return site;
+    crowded.resize(sites.size());
     for_each_index<ConcurrencyTag>(
       sites.size(),
       [&](std::size_t r) {

@@ -115,7 +115,8 @@ Array<Index> nearest_present_points(const Indexed_points& points, const Array<ch
 // elimination goes on among them down to one point, which no removal
 // follows, its stages ending at the level boundaries below, each relocated
 // (see Level_cells) from the cells of the kept points, `site` holding each
-// point's nearest kept point, or nothing when they are to be searched. The
+// point's nearest kept point, or nothing when they are to be searched (the
+// relocation's swaps find them, unless a run switches them off). The
 // callback can stop it: it receives the fraction done when the run removed
 // nothing (no level), as run_engine() does, and 1 otherwise.
 template <typename ConcurrencyTag>
