@@ -13,7 +13,11 @@
 //    direct call's just before, their medians and ranges: 11 runs at 100k,
 //    where a default-mode call takes a quarter of a second, and the medians
 //    of 21 runs of the same code moved by up to 0.07 from one process to the
-//    next; 5 at 1M.
+//    next; 5 at 1M. Then the default mode again with Sequential_tag, 5 runs
+//    at 100k and 3 at 1M: on this shared machine of two threads, one
+//    thread's ratios at 1M ranged from 1.034 to 1.058 over 7 runs in a
+//    scratch driver, where the two threads' range over 0.2 to 0.4, more
+//    than the bound's margin.
 // 2. Quality: the first m points by rank against a direct call to m, at 1,
 //    5, 10, 20 and 50%, without a level and with the level at 1%: the mean
 //    distance and the point-to-plane error (measure_simplification_quality)
@@ -40,6 +44,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace ES = CGAL::Entropy_simplification;
@@ -53,10 +58,11 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 }
 
 // The points a direct call asking for m keeps.
+template <typename ConcurrencyTag = CGAL::Parallel_tag>
 std::vector<Point> direct_call(const std::vector<Point>& points, std::size_t m, const ES::Options& options)
 {
   std::vector<Point> copy = points;
-  const auto kept = CGAL::entropy_simplify_point_set<CGAL::Parallel_tag>(
+  const auto kept = CGAL::entropy_simplify_point_set<ConcurrencyTag>(
     copy, 10, CGAL::parameters::number_of_output_points(m), options);
   copy.erase(kept, copy.end());
   return copy;
@@ -64,14 +70,15 @@ std::vector<Point> direct_call(const std::vector<Point>& points, std::size_t m, 
 
 // The input positions by rank, checked to be a permutation: the level
 // `level`, or none when 0.
+template <typename ConcurrencyTag = CGAL::Parallel_tag>
 std::vector<std::size_t> order_by_rank(const std::vector<Point>& points, std::size_t level, const ES::Options& options)
 {
   std::vector<std::size_t> ranks;
   if (level == 0)
-    CGAL::entropy_simplification_ranks<CGAL::Parallel_tag>(points, 10, std::back_inserter(ranks),
-                                                           CGAL::parameters::default_values(), options);
+    CGAL::entropy_simplification_ranks<ConcurrencyTag>(points, 10, std::back_inserter(ranks),
+                                                       CGAL::parameters::default_values(), options);
   else
-    CGAL::entropy_simplification_ranks<CGAL::Parallel_tag>(
+    CGAL::entropy_simplification_ranks<ConcurrencyTag>(
       points, 10, std::back_inserter(ranks), CGAL::parameters::number_of_output_points(level), options);
   const std::size_t n = points.size();
   if (ranks.size() != n)
@@ -112,11 +119,13 @@ struct Cost
 {
   std::string mode, input;
   std::size_t n;
+  bool threads; // Parallel_tag, or Sequential_tag
   int runs;
   double direct, without_level, with_level; // median times
   Ratios without_level_ratio, with_level_ratio; // of each run
 };
 
+template <typename ConcurrencyTag = CGAL::Parallel_tag>
 Cost measure_cost(const std::string& input, const std::vector<Point>& points, const ES::Options& options, int runs)
 {
   const std::size_t level = ES::internal::kept_count_from_percentage(points.size(), 1.);
@@ -124,13 +133,13 @@ Cost measure_cost(const std::string& input, const std::vector<Point>& points, co
   for (int r = 0; r < runs; ++r)
   {
     auto start = std::chrono::steady_clock::now();
-    const std::vector<Point> kept = direct_call(points, level, options);
+    const std::vector<Point> kept = direct_call<ConcurrencyTag>(points, level, options);
     direct.push_back(seconds_since(start));
     start = std::chrono::steady_clock::now();
-    order_by_rank(points, 0, options);
+    order_by_rank<ConcurrencyTag>(points, 0, options);
     without_level.push_back(seconds_since(start));
     start = std::chrono::steady_clock::now();
-    const std::vector<std::size_t> order = order_by_rank(points, level, options);
+    const std::vector<std::size_t> order = order_by_rank<ConcurrencyTag>(points, level, options);
     with_level.push_back(seconds_since(start));
     require_same_set(first_by_rank(points, order, level), kept);
   }
@@ -147,6 +156,7 @@ Cost measure_cost(const std::string& input, const std::vector<Point>& points, co
   return { options.mode == ES::Mode::paper ? "paper" : "default",
            input,
            points.size(),
+           std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
            runs,
            median(direct),
            median(without_level),
@@ -202,12 +212,14 @@ int main(int argc, char** argv)
     paper.mode = ES::Mode::paper;
     const std::size_t small = smoke ? 20000 : 100000, large = smoke ? 50000 : 1000000;
     const int small_runs = smoke ? 1 : 11, large_runs = smoke ? 1 : 5;
+    const std::vector<Point> small_sample = bench::mesh_sample("lion", lion, small, false).points,
+                             large_sample = bench::mesh_sample("lion", lion, large, false).points;
     std::vector<Cost> costs;
-    costs.push_back(
-      measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, ES::Options(), small_runs));
-    costs.push_back(
-      measure_cost("lion", bench::mesh_sample("lion", lion, large, false).points, ES::Options(), large_runs));
-    costs.push_back(measure_cost("lion", bench::mesh_sample("lion", lion, small, false).points, paper, small_runs));
+    costs.push_back(measure_cost("lion", small_sample, ES::Options(), small_runs));
+    costs.push_back(measure_cost("lion", large_sample, ES::Options(), large_runs));
+    costs.push_back(measure_cost("lion", small_sample, paper, small_runs));
+    costs.push_back(measure_cost<CGAL::Sequential_tag>("lion", small_sample, ES::Options(), smoke ? 1 : 5));
+    costs.push_back(measure_cost<CGAL::Sequential_tag>("lion", large_sample, ES::Options(), smoke ? 1 : 3));
 
     std::vector<bench::Cloud> clouds;
     clouds.push_back(bench::mesh_sample("lion", lion, smoke ? 30000 : 457124, false));
@@ -221,31 +233,33 @@ int main(int argc, char** argv)
         quality.push_back(q);
 
     std::ofstream csv(out + "/lod.csv");
-    csv << "table,mode,input,points,level,percentage,direct_s,ranks_s,ratio\n";
+    csv << "table,mode,input,points,level,percentage,direct_s,ranks_s,ratio,threads\n";
     std::printf("## Levels of detail\n\nProduced by `bench_lod --data DIR --out DIR`%s (`bash benchmark/run.sh` "
                 "runs it after \"Scale\"); the figures are also in `results/lod.csv`.\n\nMachine: %s.\n\n"
                 "### Cost of the whole order\n\n`CGAL::entropy_simplification_ranks(points, 10, ranks)`, "
                 "without a level, and with `number_of_output_points(L)`, against one "
                 "`CGAL::entropy_simplify_point_set(points, 10, number_of_output_points(L))`, L = 1%% of the "
-                "points, `Parallel_tag` on the machine's threads, run after run in one process, on "
-                "`meshes/lion.off` sampled uniformly in area (seed 2018). Times: medians; ratios: the median, "
-                "and the range, of each run's ratio to the direct call just before it (*runs* runs: on 100,000 "
-                "points a direct call of the default mode takes a quarter of a second, and the medians of 21 "
-                "runs of the same code moved by up to 0.07 from one process to the next). Issue 11's target: "
-                "at most 1.1x.\n\n"
-                "| mode | input | points | runs | direct call to 1%% | whole order, no level | ratio | whole "
-                "order, level 1%% | ratio |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
+                "points, run after run in one process, on `meshes/lion.off` sampled uniformly in area (seed "
+                "2018), with `Parallel_tag` on the machine's threads, then with `Sequential_tag`. Times: "
+                "medians; ratios: the median, and the range, of each run's ratio to the direct call just before "
+                "it (*runs* runs: on 100,000 points a direct call of the default mode takes a quarter of a "
+                "second, and the medians of 21 runs of the same code moved by up to 0.07 from one process to "
+                "the next). On this shared machine, one thread's ratios vary far less from run to run (their "
+                "ranges below). Issue 11's target: at most 1.1x.\n\n"
+                "| mode | input | points | threads | runs | direct call to 1%% | whole order, no level | ratio | "
+                "whole order, level 1%% | ratio |\n|---|---|---:|---|---:|---:|---:|---:|---:|---:|\n",
                 smoke ? " --smoke" : "", bench::machine_description().c_str());
     for (const Cost& c : costs)
     {
-      std::printf("| %s | %s | %zu | %d | %.3f s | %.3f s | %.3f (%.3f to %.3f) | %.3f s | %.3f (%.3f to %.3f) |\n",
-                  c.mode.c_str(), c.input.c_str(), c.n, c.runs, c.direct, c.without_level,
+      std::printf("| %s | %s | %zu | %s | %d | %.3f s | %.3f s | %.3f (%.3f to %.3f) | %.3f s | %.3f (%.3f to "
+                  "%.3f) |\n",
+                  c.mode.c_str(), c.input.c_str(), c.n, c.threads ? "all" : "1", c.runs, c.direct, c.without_level,
                   c.without_level_ratio.median, c.without_level_ratio.least, c.without_level_ratio.greatest,
                   c.with_level, c.with_level_ratio.median, c.with_level_ratio.least, c.with_level_ratio.greatest);
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",none,1," << c.direct << "," << c.without_level
-          << "," << c.without_level_ratio.median << "\n";
+          << "," << c.without_level_ratio.median << "," << (c.threads ? "all" : "1") << "\n";
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1,1," << c.direct << "," << c.with_level << ","
-          << c.with_level_ratio.median << "\n";
+          << c.with_level_ratio.median << "," << (c.threads ? "all" : "1") << "\n";
     }
     std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, without a level (every "
                 "level boundary relocated) and with the level at 1%%, against `CGAL::entropy_simplify_point_set` "
@@ -268,7 +282,7 @@ int main(int argc, char** argv)
           const double r = which == 0 ? quality[j].mean_ratio : quality[j].plane_ratio;
           std::printf(" %.3f |", r);
           csv << "quality," << (which == 0 ? "mean_distance" : "point_to_plane") << "," << quality[j].input << ",,"
-              << (quality[j].with_level ? "1" : "none") << "," << quality[j].percentage << ",,," << r << "\n";
+              << (quality[j].with_level ? "1" : "none") << "," << quality[j].percentage << ",,," << r << ",all\n";
         }
         std::printf("\n");
       }

@@ -3,7 +3,7 @@
 # every input, writes benchmark/RESULTS.md and benchmark/results/ (CSV, data,
 # figures), then the sections "Coincident points" (bench_duplicates),
 # "Scale" (bench_scale, 100k to 10M points, about 7 to 15 minutes), "Levels of
-# detail" (bench_lod, about 2 minutes), "What each term contributes"
+# detail" (bench_lod, about 3 minutes), "What each term contributes"
 # (bench_ablation, about 4 minutes) and "Point-to-plane error and noise"
 # (bench_noise, about 5 minutes) of RESULTS.md. With --quick: smaller
 # inputs, a couple of minutes,

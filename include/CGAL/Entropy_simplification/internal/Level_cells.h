@@ -123,36 +123,53 @@ private:
 
   // Each cell's median: its candidate of least distance sum to its members
   // (ties by input position), the first candidate, the site, being one. The
-  // candidates' sums are computed in parallel rather than the cells':
-  // at the coarsest levels, a few cells hold every point.
+  // cells run in parallel, and when they are few, as at the coarsest
+  // levels where a few cells hold every point, so do their candidates.
+  // Nothing is stored for each candidate otherwise: at the 50% boundary of
+  // 1,000,000 points, an array of their merits took longer to allocate
+  // (110 ms, page faults) than their sums.
   template <typename ConcurrencyTag>
   static Array<Index> medians(const Indexed_points& points, const Cell_members& candidates,
                               const Cell_members& members)
   {
-    const std::size_t cells = candidates.first.size() - 1;
-    Array<Index> cell_of_candidate(candidates.members.size());
-    for (std::size_t c = 0; c < cells; ++c)
-      std::fill(cell_of_candidate.begin() + std::ptrdiff_t(candidates.first[c]),
-                cell_of_candidate.begin() + std::ptrdiff_t(candidates.first[c + 1]), Index(c));
-    Array<Merits> merits(candidates.members.size());
+    Array<Index> median(candidates.first.size() - 1);
+    const bool few_cells = median.size() < 64;
     for_each_index<ConcurrencyTag>(
-      merits.size(),
-      [&](std::size_t k) {
-        const Index c = cell_of_candidate[k], id = candidates.members[k];
-        merits[k] = merits_of(points, members.begin(c), members.end(c), Neighbor{ 0., points.input_position[id], id });
+      median.size(),
+      [&](std::size_t c) {
+        median[c] = median_of_cell<ConcurrencyTag>(points, candidates.begin(c), candidates.end(c), members.begin(c),
+                                                   members.end(c), few_cells);
       },
       [](std::size_t) { return true; });
-    Array<Index> median(cells);
-    for (std::size_t c = 0; c < cells; ++c)
-    {
-      CGAL_assertion(candidates.first[c] < candidates.first[c + 1]);
-      const Merits* best = &merits[candidates.first[c]];
-      for (std::size_t k = candidates.first[c] + 1; k < candidates.first[c + 1]; ++k)
-        if (nearer_median(merits[k], *best))
-          best = &merits[k];
-      median[c] = best->member.id;
-    }
     return median;
+  }
+
+  // The median of the cell of `members` among its `candidates` (see
+  // medians), their sums computed in parallel when `in_parallel`.
+  template <typename ConcurrencyTag>
+  static Index median_of_cell(const Indexed_points& points, const Index* first_candidate,
+                              const Index* beyond_candidate, const Index* first_member, const Index* beyond_member,
+                              bool in_parallel)
+  {
+    CGAL_assertion(first_candidate < beyond_candidate);
+    const std::size_t count = std::size_t(beyond_candidate - first_candidate);
+    const auto merits = [&](std::size_t k) {
+      const Index id = first_candidate[k];
+      return merits_of(points, first_member, beyond_member, Neighbor{ 0., points.input_position[id], id });
+    };
+    Array<Merits> computed;
+    if (in_parallel)
+    {
+      computed.resize(count);
+      for_each_index<ConcurrencyTag>(
+        count, [&](std::size_t k) { computed[k] = merits(k); }, [](std::size_t) { return true; });
+    }
+    const auto merits_at = [&](std::size_t k) { return in_parallel ? computed[k] : merits(k); };
+    Merits best = merits_at(0);
+    for (std::size_t k = 1; k < count; ++k)
+      if (const Merits m = merits_at(k); nearer_median(m, best))
+        best = m;
+    return best.member.id;
   }
 
   // The root of the cell of `i`, halving the paths on the way.

@@ -553,8 +553,9 @@ private:
         level.push_back(i);
     Array<char>().swap(in_level);
     list_present();
-    Array<Index> site = swap_among_neighbors<ConcurrencyTag>(m_points, m_present, level, m_first, m_neighbors,
-                                                             boundary_swap_count(m_listed.size()), m_field.scale);
+    Array<Index> site = swap_among_neighbors<ConcurrencyTag>(m_points, m_present, level, m_listed, m_first,
+                                                             m_neighbors, boundary_swap_count(m_listed.size()),
+                                                             m_field.scale);
     Array<Index> gone, come;
     for (Index i : m_listed)
       if (!is_present(i))
