@@ -16,7 +16,7 @@
 //    next; 5 at 1M. Then the default mode again with Sequential_tag, 5 runs
 //    at 100k and 3 at 1M: on this shared machine of two threads, one
 //    thread's ratios at 1M ranged from 1.034 to 1.058 over 7 runs in a
-//    scratch driver, where the two threads' range over 0.2 to 0.4, more
+//    scratch driver, where the two threads' ranged over up to 0.4, more
 //    than the bound's margin.
 // 2. Quality: the first m points by rank against a direct call to m, at 1,
 //    5, 10, 20 and 50%, without a level and with the level at 1%: the mean
@@ -119,7 +119,7 @@ struct Cost
 {
   std::string mode, input;
   std::size_t n;
-  bool threads; // Parallel_tag, or Sequential_tag
+  bool parallel; // Parallel_tag, or Sequential_tag
   int runs;
   double direct, without_level, with_level; // median times
   Ratios without_level_ratio, with_level_ratio; // of each run
@@ -253,13 +253,13 @@ int main(int argc, char** argv)
     {
       std::printf("| %s | %s | %zu | %s | %d | %.3f s | %.3f s | %.3f (%.3f to %.3f) | %.3f s | %.3f (%.3f to "
                   "%.3f) |\n",
-                  c.mode.c_str(), c.input.c_str(), c.n, c.threads ? "all" : "1", c.runs, c.direct, c.without_level,
+                  c.mode.c_str(), c.input.c_str(), c.n, c.parallel ? "all" : "1", c.runs, c.direct, c.without_level,
                   c.without_level_ratio.median, c.without_level_ratio.least, c.without_level_ratio.greatest,
                   c.with_level, c.with_level_ratio.median, c.with_level_ratio.least, c.with_level_ratio.greatest);
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",none,1," << c.direct << "," << c.without_level
-          << "," << c.without_level_ratio.median << "," << (c.threads ? "all" : "1") << "\n";
+          << "," << c.without_level_ratio.median << "," << (c.parallel ? "all" : "1") << "\n";
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1,1," << c.direct << "," << c.with_level << ","
-          << c.with_level_ratio.median << "," << (c.threads ? "all" : "1") << "\n";
+          << c.with_level_ratio.median << "," << (c.parallel ? "all" : "1") << "\n";
     }
     std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, without a level (every "
                 "level boundary relocated) and with the level at 1%%, against `CGAL::entropy_simplify_point_set` "

@@ -565,17 +565,20 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
 }
 
 // The coverage swaps at a ranking's level boundary (see swap_in_turn, and
-// List_search), among the points of the level above alone, `level`, so
-// that the levels stay nested: those present, `present_points`, and those
-// the stage that ended there removed, both in index order. `first` and
-// `neighbors` are that stage's lists of neighbours. Returns each point's
-// nearest present neighbour after the swaps (ties by input position):
-// itself when present, none when it has none or lies outside `level`.
+// List_search), among the points of the level above alone, `level`, in
+// index order, so that the levels stay nested: those present, which are
+// `present_points` (in index order), and those the stage that ended there
+// removed. `first` and `neighbors` are that stage's lists of neighbours.
+// Returns each point's nearest present neighbour after the swaps (ties by
+// input position): itself when present, none when it has none or lies
+// outside `level`.
 template <typename ConcurrencyTag>
 Array<Index> swap_among_neighbors(const Indexed_points& points, Array<char>& present, const Array<Index>& level,
                                   const Array<Index>& present_points, const Array<std::size_t>& first,
                                   const Array<Index>& neighbors, std::size_t swaps, const Array<double>& scale)
 {
+  CGAL_assertion(std::size_t(std::count_if(level.begin(), level.end(), [&](Index i) { return present[i] != 0; })) ==
+                 present_points.size());
   const List_search search(points, present, level, first, neighbors);
   Array<Index> site(points.size(), none_index);
   for_each_index<ConcurrencyTag>(

@@ -15,10 +15,12 @@
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -132,42 +134,52 @@ private:
   static Array<Index> medians(const Indexed_points& points, const Cell_members& candidates,
                               const Cell_members& members)
   {
+    // below this many cells, the cells alone would leave most threads idle
+    // on a machine of many (the last boundaries have 2, 5, 10, 20 and 50)
+    constexpr std::size_t few_cells = 64;
     Array<Index> median(candidates.first.size() - 1);
-    const bool few_cells = median.size() < 64;
+    const bool candidates_in_parallel =
+      std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && median.size() < few_cells;
     for_each_index<ConcurrencyTag>(
       median.size(),
       [&](std::size_t c) {
-        median[c] = median_of_cell<ConcurrencyTag>(points, candidates.begin(c), candidates.end(c), members.begin(c),
-                                                   members.end(c), few_cells);
+        median[c] = median_of_cell<ConcurrencyTag>(points, candidates, members, c, candidates_in_parallel);
       },
       [](std::size_t) { return true; });
     return median;
   }
 
-  // The median of the cell of `members` among its `candidates` (see
-  // medians), their sums computed in parallel when `in_parallel`.
+  // The median of cell `c` (see medians), its candidates' sums computed in
+  // parallel when `in_parallel`.
   template <typename ConcurrencyTag>
-  static Index median_of_cell(const Indexed_points& points, const Index* first_candidate,
-                              const Index* beyond_candidate, const Index* first_member, const Index* beyond_member,
-                              bool in_parallel)
+  static Index median_of_cell(const Indexed_points& points, const Cell_members& candidates,
+                              const Cell_members& members, std::size_t c, bool in_parallel)
   {
-    CGAL_assertion(first_candidate < beyond_candidate);
-    const std::size_t count = std::size_t(beyond_candidate - first_candidate);
+    const Index* candidate = candidates.begin(c);
+    const std::size_t count = std::size_t(candidates.end(c) - candidate);
+    if (count == 1) // the site alone: no point that the stage removed joined its cell
+      return candidate[0];
     const auto merits = [&](std::size_t k) {
-      const Index id = first_candidate[k];
-      return merits_of(points, first_member, beyond_member, Neighbor{ 0., points.input_position[id], id });
+      return merits_of(points, members.begin(c), members.end(c),
+                       Neighbor{ 0., points.input_position[candidate[k]], candidate[k] });
     };
-    Array<Merits> computed;
-    if (in_parallel)
-    {
-      computed.resize(count);
-      for_each_index<ConcurrencyTag>(
-        count, [&](std::size_t k) { computed[k] = merits(k); }, [](std::size_t) { return true; });
-    }
-    const auto merits_at = [&](std::size_t k) { return in_parallel ? computed[k] : merits(k); };
-    Merits best = merits_at(0);
+    if (!in_parallel)
+      return nearest_median(count, merits);
+    Array<Merits> computed(count);
+    for_each_index<ConcurrencyTag>(
+      count, [&](std::size_t k) { computed[k] = merits(k); }, [](std::size_t) { return true; });
+    return nearest_median(count, [&](std::size_t k) { return computed[k]; });
+  }
+
+  // The median among `count` candidates, `merits(k)` giving the k-th's
+  // merits (see nearer_median).
+  template <typename MeritsOf>
+  static Index nearest_median(std::size_t count, const MeritsOf& merits)
+  {
+    CGAL_assertion(count > 0);
+    Merits best = merits(0);
     for (std::size_t k = 1; k < count; ++k)
-      if (const Merits m = merits_at(k); nearer_median(m, best))
+      if (const Merits m = merits(k); nearer_median(m, best))
         best = m;
     return best.member.id;
   }
