@@ -123,6 +123,9 @@ struct Cost
   int runs;
   double direct, without_level, with_level; // median times
   Ratios without_level_ratio, with_level_ratio; // of each run
+
+  // the threads column of the table and of lod.csv
+  const char* threads() const { return parallel ? "all" : "1"; }
 };
 
 template <typename ConcurrencyTag = CGAL::Parallel_tag>
@@ -253,13 +256,13 @@ int main(int argc, char** argv)
     {
       std::printf("| %s | %s | %zu | %s | %d | %.3f s | %.3f s | %.3f (%.3f to %.3f) | %.3f s | %.3f (%.3f to "
                   "%.3f) |\n",
-                  c.mode.c_str(), c.input.c_str(), c.n, c.parallel ? "all" : "1", c.runs, c.direct, c.without_level,
+                  c.mode.c_str(), c.input.c_str(), c.n, c.threads(), c.runs, c.direct, c.without_level,
                   c.without_level_ratio.median, c.without_level_ratio.least, c.without_level_ratio.greatest,
                   c.with_level, c.with_level_ratio.median, c.with_level_ratio.least, c.with_level_ratio.greatest);
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",none,1," << c.direct << "," << c.without_level
-          << "," << c.without_level_ratio.median << "," << (c.parallel ? "all" : "1") << "\n";
+          << "," << c.without_level_ratio.median << "," << c.threads() << "\n";
       csv << "cost," << c.mode << "," << c.input << "," << c.n << ",1,1," << c.direct << "," << c.with_level << ","
-          << c.with_level_ratio.median << "," << (c.parallel ? "all" : "1") << "\n";
+          << c.with_level_ratio.median << "," << c.threads() << "\n";
     }
     std::printf("\n### Prefixes against direct calls\n\nThe first m points by rank, without a level (every "
                 "level boundary relocated) and with the level at 1%%, against `CGAL::entropy_simplify_point_set` "
