@@ -262,6 +262,7 @@ reference::Terms reference_terms(const ESI::Default_mode_terms& t)
   r.medians = t.medians;
   r.radius_bound = t.radius_bound;
   r.coverage_swaps = t.coverage_swaps;
+  r.coverage_elimination = t.coverage_elimination;
   return r;
 }
 
@@ -317,6 +318,79 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
     if (term != "none")
       CHECK(changes_an_order);
   }
+}
+
+namespace {
+
+ESI::Default_mode_terms with_coverage_elimination()
+{
+  ESI::Default_mode_terms terms;
+  terms.coverage_elimination = true;
+  return terms;
+}
+
+// The library's ranks with the `terms`, through the kept points from `level`:
+// the removal order, the one point never removed last.
+template <typename ConcurrencyTag>
+std::vector<std::size_t> ranks_with_terms(const std::vector<Point>& points, unsigned int k, std::size_t level,
+                                          const ES::Options& options, const ESI::Default_mode_terms& terms)
+{
+  const auto removed = ESI::simplify_points<ConcurrencyTag>(
+    ESI::collapse_duplicates<ConcurrencyTag>(ESI::Array<ESI::Working_point>(points.begin(), points.end())), k, level,
+    ESI::Run_extent::through_the_kept, options, std::function<bool(double)>(), false,
+    [](ESI::Index, const ESI::Working_vector&) {}, terms);
+  REQUIRE(removed);
+  std::vector<std::size_t> rank(points.size(), 0);
+  for (std::size_t j = 0; j < removed->size(); ++j)
+    rank[(*removed)[j]] = points.size() - 1 - j;
+  return rank;
+}
+
+} // namespace
+
+// The greedy coverage elimination, with its cost shares summed in integers
+// and its rounds, against the reference's scans from scratch each round: the
+// removal order to a fifth, a half and nine tenths (one round), and the
+// ranks through the kept points, sequentially and in parallel.
+TEST_CASE("Default mode, coverage elimination: removal order and ranks equal the reference's",
+          "[default][reference][coverage elimination]")
+{
+  test_parallel::require_tbb();
+  const ESI::Default_mode_terms terms = with_coverage_elimination();
+  const reference::Terms reference_with = reference_terms(terms);
+  test_clouds::Cloud stray = test_clouds::wavy_surface(300, 0.01, 3);
+  stray.name += " and a stray point";
+  stray.points.emplace_back(500., 500., 500.);
+  const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
+                                          Setting{ test_clouds::bent_grid(20), 8 }, Setting{ stray, 8 } };
+  for (const Setting& setting : settings)
+    for (double feature_weight : { 3., 0. })
+    {
+      ES::Options options;
+      options.feature_weight = feature_weight;
+      const std::vector<Point>& points = setting.cloud.points;
+      const reference::Field field = reference::feature_field(points, setting.k, options, reference_with);
+      const ESI::Array<ESI::Working_point> input(points.begin(), points.end());
+      for (std::size_t tenths : { std::size_t(2), std::size_t(5), std::size_t(9) })
+      {
+        const std::size_t target = points.size() * tenths / 10;
+        INFO(setting.cloud.name << ", feature weight " << feature_weight << ", target " << target);
+        const std::vector<std::size_t> expected = reference::removal_order(points, field, target, reference_with);
+        CHECK(as_positions(ESI::removal_order_with_terms<CGAL::Sequential_tag>(input, setting.k, target, options,
+                                                                              terms)) == expected);
+        CHECK(as_positions(test_parallel::on_two_threads_or_more([&] {
+                return ESI::removal_order_with_terms<test_parallel::Parallel_tag>(input, setting.k, target, options,
+                                                                                  terms);
+              })) == expected);
+      }
+      const std::size_t level = points.size() / 5;
+      INFO(setting.cloud.name << ", feature weight " << feature_weight << ", ranks from " << level);
+      const std::vector<std::size_t> expected = reference::ranks(points, field, level, reference_with);
+      CHECK(ranks_with_terms<CGAL::Sequential_tag>(points, setting.k, level, options, terms) == expected);
+      CHECK(test_parallel::on_two_threads_or_more([&] {
+              return ranks_with_terms<test_parallel::Parallel_tag>(points, setting.k, level, options, terms);
+            }) == expected);
+    }
 }
 
 namespace {

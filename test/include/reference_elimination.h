@@ -45,6 +45,7 @@ using Vector = Kernel::Vector_3;
 // which the ablation switches off: the manual's "What each term contributes".
 struct Terms
 {
+  bool coverage_elimination = false; // the greedy coverage elimination, not Yuksel's
   bool coarse_scale = true;   // the strength is the greater of the two scales'
   bool feature_budget = true; // the weight is lowered where features cover much
   bool density = true;        // the radius follows the input's density
@@ -412,7 +413,9 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
     // rounded to 30 significant bits, as the manual says
     int exponent = 0;
     const double significand =
-      std::frexp(radius_factor(strength[p], field.weight, area[p], typical_area, terms.density), &exponent);
+      std::frexp(radius_factor(strength[p], field.weight, area[p], typical_area,
+                               terms.density && !terms.coverage_elimination),
+                 &exponent);
     field.scale.push_back(std::ldexp(std::round(significand * 1073741824.), exponent - 30));
     field.effective_area += area[p] / (field.scale[p] * field.scale[p]);
   }
@@ -530,6 +533,84 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
       const std::size_t p = most_crowded(weights, present);
       present[p] = false;
       removed.push_back(p);
+    }
+  }
+  return removed;
+}
+
+// ----------------------------------------------------------------------------
+// The greedy coverage elimination
+// ----------------------------------------------------------------------------
+
+// The present points nearest `points[p]` and next, in the neighbour order,
+// `p` itself first when present, by a scan: (distance, input position).
+inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const std::vector<Point>& points,
+                                                                         const std::vector<bool>& present,
+                                                                         std::size_t p)
+{
+  std::vector<Neighbor> all;
+  for (std::size_t q = 0; q < points.size(); ++q)
+    if (present[q])
+      all.emplace_back(q == p ? 0. : squared_distance(points[p], points[q]), q);
+  std::sort(all.begin(), all.end());
+  std::vector<std::pair<double, std::size_t> > two;
+  for (std::size_t j = 0; j < (std::min)(std::size_t(2), all.size()); ++j)
+    two.emplace_back(std::sqrt(all[j].first), all[j].second);
+  return two;
+}
+
+// The removal order from the `present` points (all when empty) down to
+// `target`. Each point weighs (smallest scale / its scale)^3; what removing
+// its nearest present point costs it is its weight times the distance to
+// its next one less the distance to the nearest, in units of 2^-20 of the
+// typical spacing (the side of the effective area over n), truncated, at
+// most 2^40. A present point's cost sums those of the points it is nearest
+// of. Each round, from the costs of its start: a present point is a
+// candidate when it comes (lowest cost, then lowest input position) before
+// every present point with which it is some point's nearest and next, and
+// not after the tenth present point (at least the first); the candidates
+// are removed in that order, at most down to `target`.
+inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& points, const Field& field,
+                                                   std::size_t target, std::vector<bool> present = {})
+{
+  const std::size_t n = points.size();
+  if (present.empty())
+    present.assign(n, true);
+  const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
+  const double unit = std::sqrt(field.effective_area / double(n)) / 1048576.;
+  std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
+  std::vector<std::size_t> removed;
+  while (count > target)
+  {
+    std::vector<std::int64_t> cost(n, 0);
+    std::vector<std::pair<std::size_t, std::size_t> > nearest_and_next;
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      const auto two = nearest_two_present(points, present, p);
+      const double weight = std::pow(smallest / field.scale[p], 3.);
+      const double share = weight * (two[1].first - two[0].first) / unit;
+      cost[two[0].second] += share < 1099511627776. ? std::int64_t(share) : std::int64_t(1099511627776);
+      nearest_and_next.emplace_back(two[0].second, two[1].second);
+    }
+    const auto key = [&](std::size_t s) { return std::make_pair(cost[s], s); };
+    std::vector<bool> candidate = present;
+    for (const auto& [a, b] : nearest_and_next)
+      candidate[key(a) < key(b) ? b : a] = false;
+    std::vector<std::pair<std::int64_t, std::size_t> > keys;
+    for (std::size_t s = 0; s < n; ++s)
+      if (present[s])
+        keys.push_back(key(s));
+    std::sort(keys.begin(), keys.end());
+    const auto tenth = keys[(std::max)(std::size_t(1), count / 10) - 1];
+    std::vector<std::pair<std::int64_t, std::size_t> > round;
+    for (std::size_t s = 0; s < n; ++s)
+      if (candidate[s] && !(tenth < key(s)))
+        round.push_back(key(s));
+    std::sort(round.begin(), round.end());
+    for (std::size_t j = 0; j < round.size() && count > target; ++j, --count)
+    {
+      present[round[j].second] = false;
+      removed.push_back(round[j].second);
     }
   }
   return removed;
@@ -744,7 +825,9 @@ inline std::size_t coverage_swaps_keeping(std::size_t kept, std::size_t n)
 inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, const Field& field,
                                               std::size_t target, const Terms& terms = Terms())
 {
-  std::vector<std::size_t> removed = eliminate(points, field, target, {}, terms.halving_stages);
+  std::vector<std::size_t> removed = terms.coverage_elimination
+                                       ? coverage_eliminate(points, field, target)
+                                       : eliminate(points, field, target, {}, terms.halving_stages);
   if ((!terms.relocation && !terms.coverage_swaps) || removed.empty())
     return removed;
   std::vector<bool> eliminated(points.size(), true);
@@ -928,16 +1011,20 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
 
 // The ranks of the default mode with the level `level` exact: the points
 // kept by the default mode down to `level` are ordered by eliminating among
-// them by boundaries; rank 0 is the last point present, and the points
+// them by boundaries, or by the greedy coverage elimination going on when
+// the `terms` say so; rank 0 is the last point present, and the points
 // removed after it come before those removed earlier.
-inline std::vector<std::size_t> ranks(const std::vector<Point>& points, const Field& field, std::size_t level)
+inline std::vector<std::size_t> ranks(const std::vector<Point>& points, const Field& field, std::size_t level,
+                                      const Terms& terms = Terms())
 {
   const std::size_t n = points.size();
-  std::vector<std::size_t> removed = level < n ? removal_order(points, field, level) : std::vector<std::size_t>();
+  std::vector<std::size_t> removed =
+    level < n ? removal_order(points, field, level, terms) : std::vector<std::size_t>();
   std::vector<bool> kept(n, true);
   for (std::size_t p : removed)
     kept[p] = false;
-  for (std::size_t p : eliminate_by_boundaries(points, field, kept))
+  for (std::size_t p : terms.coverage_elimination ? coverage_eliminate(points, field, 1, kept)
+                                                  : eliminate_by_boundaries(points, field, kept))
     removed.push_back(p);
   std::vector<std::size_t> rank(n, 0); // the one point never removed keeps 0
   for (std::size_t j = 0; j < removed.size(); ++j)

@@ -20,6 +20,9 @@ namespace internal {
 // check each switch against the independent reference.
 struct Default_mode_terms
 {
+  // the elimination is the greedy coverage elimination (see
+  // Coverage_elimination) rather than weighted sample elimination
+  bool coverage_elimination = false;
   // the feature strength is the greater of the fine and the coarse scale's
   // (see coarse_feature_strength), rather than the fine scale's alone
   bool coarse_scale = true;

@@ -104,6 +104,16 @@ public:
     return one.best.id;
   }
 
+  // The first point of the tree other than `q` and `other` in the neighbour
+  // order of `q`. The tree must hold such a point.
+  Neighbor nearest_one_besides(Index q, Index other) const
+  {
+    Best_one one;
+    one.besides = other;
+    search_nearest(q, one);
+    return one.best;
+  }
+
   // Records the largest of `scales` in each node, for `within_reach_of_leaf`.
   // Children follow their parent in m_nodes: a backward pass sees them first.
   void record_largest_scales(const Array<double>& scales)
@@ -269,10 +279,11 @@ private:
   struct Best_one
   {
     Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
+    Index besides = std::numeric_limits<Index>::max(); // a point not offered, besides `q`
     double bound() const { return best.squared_distance; }
     void offer(const Neighbor& candidate)
     {
-      if (candidate < best)
+      if (candidate < best && candidate.id != besides)
         best = candidate;
     }
   };

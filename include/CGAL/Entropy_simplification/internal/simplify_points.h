@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Coverage_elimination.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
@@ -111,22 +112,14 @@ Array<Index> nearest_present_points(const Indexed_points& points, const Array<ch
   return site;
 }
 
-// Orders the points a default-mode run kept, once relocated: the
-// elimination goes on among them down to one point, which no removal
-// follows, its stages ending at the level boundaries below, each relocated
-// (see Level_cells) from the cells of the kept points, `site` holding each
-// point's nearest kept point, or nothing when they are to be searched (the
-// relocation's swaps find them, unless a run switches them off). The
-// callback can stop it: it receives the fraction done when the run removed
-// nothing (no level), as run_engine() does, and 1 otherwise.
-template <typename ConcurrencyTag>
-bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
-                        Array<Index> site, const std::function<bool(double)>& callback)
+// Goes on removing among the present points of `engine` down to one point,
+// which no removal follows, appending the removals to `run`. The callback
+// can stop it: it receives the fraction done when the run removed nothing
+// (no level), as run_engine() does, and 1 otherwise.
+template <typename ConcurrencyTag, typename Engine>
+bool remove_down_to_one(Engine& engine, const Indexed_points& points, Engine_run& run,
+                        const std::function<bool(double)>& callback)
 {
-  const Array<char> present = present_after(run, points.size());
-  engine.relocate_level_boundaries(site.empty() ? nearest_present_points<ConcurrencyTag>(points, present)
-                                                : std::move(site));
-  engine.set_present(present);
   const bool whole_run = run.removed.empty();
   const std::size_t removals = points.size() - run.removed.size() - 1;
   const std::size_t period = whole_run ? (std::max)(std::size_t(1), removals / 1000) : 1024;
@@ -136,6 +129,35 @@ bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& poin
     return ++count % period != 0 || !callback ||
            callback(whole_run ? 0.25 + 0.75 * double(count) / double(removals) : 1.);
   });
+}
+
+// Orders the points a default-mode run kept, once relocated: the
+// elimination goes on among them down to one point, its stages ending at
+// the level boundaries below, each relocated (see Level_cells) from the
+// cells of the kept points, `site` holding each point's nearest kept point,
+// or nothing when they are to be searched (the relocation's swaps find
+// them, unless a run switches them off). The callback can stop it (see
+// remove_down_to_one).
+template <typename ConcurrencyTag>
+bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& points, Engine_run& run,
+                        Array<Index> site, const std::function<bool(double)>& callback)
+{
+  const Array<char> present = present_after(run, points.size());
+  engine.relocate_level_boundaries(site.empty() ? nearest_present_points<ConcurrencyTag>(points, present)
+                                                : std::move(site));
+  engine.set_present(present);
+  return remove_down_to_one<ConcurrencyTag>(engine, points, run, callback);
+}
+
+// Orders the points a greedy coverage run kept, once relocated: the
+// elimination goes on among them down to one point, each input point
+// following its nearest and next kept points from the relocated ones.
+template <typename ConcurrencyTag>
+bool eliminate_the_kept(Coverage_elimination& engine, const Indexed_points& points, Engine_run& run,
+                        Array<Index>, const std::function<bool(double)>& callback)
+{
+  engine.set_present(present_after(run, points.size()));
+  return remove_down_to_one<ConcurrencyTag>(engine, points, run, callback);
 }
 
 // Writes the normal of each present point when `with_normals`, and returns
@@ -160,6 +182,28 @@ Array<Index> finish(const Engine& engine, const Indexed_points& points, const En
   for (Index i : run.removed)
     removed.push_back(points.input_position[i]);
   return removed;
+}
+
+// The default mode's run with `engine`: the elimination down to `target`,
+// the relocation, then, through the kept points, the elimination on among
+// them (see simplify_distinct_points).
+template <typename ConcurrencyTag, typename Engine, typename NormalWriter>
+std::optional<Array<Index> > run_default_mode(Engine& engine, const Indexed_points& indexed, std::size_t target,
+                                              bool through, const std::function<bool(double)>& callback,
+                                              bool with_normals, const NormalWriter& write_normal,
+                                              const Default_mode_terms& terms)
+{
+  Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
+  if (!run.initialized)
+    return std::nullopt;
+  Array<Index> site; // each point's nearest kept point, when the relocation found them
+  if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
+    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
+  if (through &&
+      !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
+    return std::nullopt;
+  Array<Index>().swap(site); // a direct call's are not needed: their memory goes back first
+  return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
 }
 
 // The method of `options.mode` on points without copies, given in input
@@ -192,18 +236,15 @@ std::optional<Array<Index> > simplify_distinct_points(Array<Working_point>&& poi
       return std::nullopt;
     return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
   }
+  if (terms.coverage_elimination)
+  {
+    Coverage_elimination engine(indexed, k, options, terms);
+    return run_default_mode<ConcurrencyTag>(engine, indexed, target, through, callback, with_normals, write_normal,
+                                            terms);
+  }
   Weighted_elimination engine(indexed, k, options, terms);
-  Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
-  if (!run.initialized)
-    return std::nullopt;
-  Array<Index> site; // each point's nearest kept point, when the relocation found them
-  if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
-  if (through &&
-      !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
-    return std::nullopt;
-  Array<Index>().swap(site); // a direct call's are not needed: their memory goes back first
-  return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
+  return run_default_mode<ConcurrencyTag>(engine, indexed, target, through, callback, with_normals, write_normal,
+                                          terms);
 }
 
 // The method of `options.mode` on a range down to `target` points, or on

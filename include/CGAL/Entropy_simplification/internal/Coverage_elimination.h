@@ -1,0 +1,294 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A greedy coverage elimination: removes, round after round, the present
+// points whose removal raises least the weighted sum of the input points'
+// distances to their nearest present point.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_COVERAGE_ELIMINATION_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_COVERAGE_ELIMINATION_H
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
+#include <CGAL/Entropy_simplification/internal/Elimination_field.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Point_tree.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// The weight of each point in the sum of distances: (1 + w s)^(3/2) for a
+// feature strength s and the budgeted feature weight w, that is the field's
+// scale to the power -3, divided by the greatest so that it is at most 1.
+// Where a surface weighs c times more, the sum is least with about c^(2/3)
+// times more points per area (the density of a weighted k-median on a
+// surface), so the kept density grows as 1 + w s, as in the field's radius.
+inline Array<double> coverage_weights(const Elimination_field& field)
+{
+  Array<double> weight(field.scale.size());
+  const double smallest = field.scale.empty() ? 1. : *std::min_element(field.scale.begin(), field.scale.end());
+  for (std::size_t i = 0; i < weight.size(); ++i)
+    weight[i] = std::pow(smallest / field.scale[i], 3.);
+  return weight;
+}
+
+// The units of a point's share of a removal cost: 2^-20 of the typical
+// spacing, the side of a point's share of the effective area, so that sums
+// and differences of shares are exact whatever their order.
+inline double share_unit(const Elimination_field& field, std::size_t n)
+{
+  return std::sqrt(field.effective_area / double((std::max)(n, std::size_t(1)))) / 1048576.;
+}
+
+// What removing point `a` costs point `i`, whose nearest present point it is
+// and whose next is at `next` from it: its weight times the distance it
+// then gains, in units of `unit`, at most 2^40 (a million spacings), so that
+// the shares of 2^23 points at that bound still fit a cost. The distance to
+// `a` is 0 when `i` is `a`.
+inline std::int64_t removal_share(double weight, double to_nearest, double to_next, double unit)
+{
+  const double share = weight * (to_next - to_nearest) / unit;
+  return share < 1099511627776. ? std::int64_t(share) : std::int64_t(1099511627776);
+}
+
+// The elimination on the present points. Each input point follows its
+// nearest and next nearest present point (the neighbour order), and each
+// present point's cost is the sum of the shares of the points it is the
+// nearest of. Each round removes the present points that come first (the
+// lowest cost, ties to the lowest input position) among those they share an
+// input point with, among the tenth of the present points that come first:
+// none of them is the nearest and next of one point, so each point loses at
+// most one of the two. The round's removals, by cost, are the order.
+class Coverage_elimination
+{
+public:
+  Coverage_elimination(const Indexed_points& points, unsigned int k, const Options& options,
+                       const Default_mode_terms& terms = Default_mode_terms())
+    : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
+      m_count(points.size())
+  {}
+
+  // Computes the field from the k nearest neighbours of every point, without
+  // the density term: the sum of distances follows the input's density
+  // itself. `progress` receives the fraction done, on the calling thread;
+  // returns false when it asked to stop.
+  template <typename ConcurrencyTag, typename Progress>
+  bool initialize(const Progress& progress)
+  {
+    Default_mode_terms field_terms = m_terms;
+    field_terms.density = false;
+    Array<Index> knn;
+    return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) &&
+           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, field_terms, std::move(knn), m_field,
+                                                     [&](double f) { return progress(0.5 + 0.5 * f); });
+  }
+
+  bool is_present(Index i) const { return m_present[i] != 0; }
+  // Makes the points of `present` the present ones, which the next
+  // remove_down_to() follows from the start.
+  void set_present(Array<char> present)
+  {
+    m_present = std::move(present);
+    m_count = std::size_t(std::count(m_present.begin(), m_present.end(), char(1)));
+    m_tree.reset();
+  }
+  // The normals of the points `subset`, as the field estimated them.
+  template <typename ConcurrencyTag>
+  Array<Working_vector> normals_of(const Array<Index>& subset) const
+  {
+    return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
+  }
+  const Elimination_field& field() const { return m_field; }
+
+  // Removes points down to `target` (at least 1), calling `removed(i)` after
+  // each removal; stops early, returning false, when it returns false.
+  template <typename ConcurrencyTag, typename Removed>
+  bool remove_down_to(std::size_t target, const Removed& removed)
+  {
+    if (!m_tree)
+      follow_present<ConcurrencyTag>();
+    while (m_count > target)
+    {
+      const Array<Index> round = removable_in_round<ConcurrencyTag>(m_count - target);
+      remove<ConcurrencyTag>(round);
+      for (Index p : round)
+        if (!removed(p))
+          return false;
+    }
+    return true;
+  }
+
+private:
+  // A point's place in the order of removal: the lowest cost first, ties to
+  // the lowest input position.
+  struct Key
+  {
+    std::int64_t cost;
+    Index input_position;
+    bool operator<(const Key& other) const // comes first
+    {
+      return cost < other.cost || (cost == other.cost && input_position < other.input_position);
+    }
+  };
+  // Costs are read between the passes that change them only.
+  Key key(Index s) const { return Key{ m_cost[s].load(std::memory_order_relaxed), m_points.input_position[s] }; }
+
+  // Every point's nearest and next present point and its share, and the
+  // costs, from the present points alone.
+  template <typename ConcurrencyTag>
+  void follow_present()
+  {
+    const std::size_t n = m_points.size();
+    if (m_weight.empty())
+    {
+      m_weight = coverage_weights(m_field);
+      m_unit = share_unit(m_field, n);
+    }
+    m_nearest.assign(n, none_index);
+    m_next.assign(n, none_index);
+    m_share.assign(n, 0);
+    Array<std::atomic<std::int64_t> >(n).swap(m_cost);
+    list_present();
+    build_tree<ConcurrencyTag>();
+    for_each_index<ConcurrencyTag>(
+      n, [&](std::size_t i) { attach(Index(i), is_present(Index(i)) ? Index(i) : m_tree->nearest_one(Index(i))); },
+      [](std::size_t) { return true; });
+  }
+
+  void list_present()
+  {
+    m_listed.clear();
+    for (Index i = 0; i < Index(m_points.size()); ++i)
+      if (is_present(i))
+        m_listed.push_back(i);
+  }
+
+  template <typename ConcurrencyTag>
+  void build_tree()
+  {
+    m_tree.emplace(m_points, m_listed.begin(), m_listed.end(), ConcurrencyTag());
+    m_tree_size = m_listed.size();
+  }
+
+  // Sets `i`'s nearest present point to `nearest` and finds its next one,
+  // then adds its share to the cost of the nearest. When `i` is present, its
+  // nearest point is itself.
+  void attach(Index i, Index nearest)
+  {
+    Index next = none_index;
+    double to_nearest = 0., to_next = 0.;
+    if (m_count > 1)
+    {
+      const Neighbor found = m_tree->nearest_one_besides(i, nearest);
+      next = found.id;
+      to_next = std::sqrt(found.squared_distance);
+      if (nearest != i)
+        to_nearest = std::sqrt(squared_distance(m_points.points[i], m_points.points[nearest]));
+    }
+    m_nearest[i] = nearest;
+    m_next[i] = next;
+    m_share[i] = next == none_index ? 0 : removal_share(m_weight[i], to_nearest, to_next, m_unit);
+    m_cost[nearest].fetch_add(m_share[i], std::memory_order_relaxed);
+  }
+
+  // The points the next round removes, by cost: those of the first tenth of
+  // the present points that come before every present point they share an
+  // input point with, at most `removals`.
+  template <typename ConcurrencyTag>
+  Array<Index> removable_in_round(std::size_t removals) const
+  {
+    Array<std::atomic<char> > blocked(m_points.size());
+    for_each_index<ConcurrencyTag>(
+      m_points.size(),
+      [&](std::size_t i) {
+        if (m_next[i] == none_index)
+          return;
+        const bool nearest_first = key(m_nearest[i]) < key(m_next[i]);
+        blocked[nearest_first ? m_next[i] : m_nearest[i]].store(1, std::memory_order_relaxed);
+      },
+      [](std::size_t) { return true; });
+    const Key threshold = key_of_present((std::max)(std::size_t(1), m_count / 10));
+    Array<Index> round;
+    for (Index s : m_listed)
+      if (!blocked[s].load(std::memory_order_relaxed) && !(threshold < key(s)))
+        round.push_back(s);
+    std::sort(round.begin(), round.end(), [this](Index a, Index b) { return key(a) < key(b); });
+    round.resize((std::min)(round.size(), removals));
+    return round;
+  }
+
+  // The key of the `count`-th present point in the order of removal.
+  Key key_of_present(std::size_t count) const
+  {
+    Array<Key> keys;
+    keys.reserve(m_listed.size());
+    for (Index s : m_listed)
+      keys.push_back(key(s));
+    std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - 1), keys.end());
+    return keys[count - 1];
+  }
+
+  // Removes the points of `round`, then moves each point whose nearest or
+  // next present point was removed to its new ones, its share with it: a
+  // point that loses its nearest keeps its next, now its nearest, as no
+  // round removes both.
+  template <typename ConcurrencyTag>
+  void remove(const Array<Index>& round)
+  {
+    for (Index p : round)
+    {
+      m_present[p] = 0;
+      m_tree->remove(p);
+    }
+    m_count -= round.size();
+    m_listed.erase(std::remove_if(m_listed.begin(), m_listed.end(), [this](Index i) { return !is_present(i); }),
+                   m_listed.end());
+    if (2 * m_count < m_tree_size)
+      build_tree<ConcurrencyTag>();
+    for_each_index<ConcurrencyTag>(
+      m_points.size(),
+      [&](std::size_t i) {
+        if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
+          return;
+        m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
+        attach(Index(i), is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
+      },
+      [](std::size_t) { return true; });
+  }
+
+  const Indexed_points& m_points;
+  const unsigned int m_k;
+  const Options m_options;
+  const Default_mode_terms m_terms;
+  Elimination_field m_field;
+  Array<char> m_present;
+  std::size_t m_count;
+  // the present points in index order
+  Array<Index> m_listed;
+  // a tree of the present points, from which the removed ones are left out
+  // until it holds twice as many as are present, when it is built again
+  std::optional<Point_tree> m_tree;
+  std::size_t m_tree_size = 0;
+  Array<double> m_weight;
+  double m_unit = 1.;
+  Array<Index> m_nearest, m_next;
+  Array<std::int64_t> m_share;
+  Array<std::atomic<std::int64_t> > m_cost;
+};
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_COVERAGE_ELIMINATION_H
