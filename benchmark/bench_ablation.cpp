@@ -272,7 +272,8 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
      << (smoke ? " --smoke (smaller inputs)" : "")
      << " (`bash benchmark/run.sh` runs it; every cell in `results/ablation.csv`). The default mode on the inputs "
         "of issue 12's targets at 10, 20 and 50% kept, with each of its terms switched off in turn, the others "
-        "on: the entropy term, and what the mode adds to weighted sample elimination (see the manual). The "
+        "on: the entropy term, the greedy coverage elimination (switched off: weighted sample elimination), and the "
+        "rest of the mode (see the manual). The "
         "program checks, in every cell, the count and that the kept points are distinct input points; with every "
         "term, it keeps what `entropy_simplify_point_set` keeps. Below 1 is better than the whole mode.\n\n"
      << "### Ratios to the whole mode\n\nGeometric mean over the cells of each group (tuned / held out / held out "

@@ -16,6 +16,7 @@
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
 #include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Coverage_elimination.h>
 #include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
 #include <CGAL/Entropy_simplification/internal/simplify_points.h>
 
@@ -102,7 +103,7 @@ template <typename ConcurrencyTag>
 Field_by_position package_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options)
 {
   const ESI::Indexed_points indexed = ESI::sort_spatially(ESI::Array<ESI::Working_point>(points.begin(), points.end()));
-  ESI::Weighted_elimination engine(indexed, k, options);
+  ESI::Coverage_elimination engine(indexed, k, options);
   REQUIRE(engine.initialize<ConcurrencyTag>([](double) { return true; }));
   const ESI::Elimination_field& field = engine.field();
   const ESI::Array<ESI::Working_vector> normals =
@@ -256,8 +257,6 @@ reference::Terms reference_terms(const ESI::Default_mode_terms& t)
   reference::Terms r;
   r.coarse_scale = t.coarse_scale;
   r.feature_budget = t.feature_budget;
-  r.density = t.density;
-  r.halving_stages = t.halving_stages;
   r.relocation = t.relocation;
   r.medians = t.medians;
   r.radius_bound = t.radius_bound;
@@ -285,7 +284,7 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
   const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
                                           Setting{ test_clouds::wavy_surface(600, 0.01, 4), 8 } };
   std::vector<ESI::Term_switched_off> ablation = ESI::each_term_switched_off();
-  REQUIRE(ablation.size() == 8);
+  REQUIRE(ablation.size() == 7);
   ablation.insert(ablation.begin(), { "none", ESI::Default_mode_terms() });
   std::vector<std::vector<std::size_t> > with_all_terms;
   for (const ESI::Term_switched_off& off : ablation)
@@ -322,10 +321,10 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
 
 namespace {
 
-ESI::Default_mode_terms with_coverage_elimination()
+ESI::Default_mode_terms with_weighted_sample_elimination()
 {
   ESI::Default_mode_terms terms;
-  terms.coverage_elimination = true;
+  terms.coverage_elimination = false;
   return terms;
 }
 
@@ -348,49 +347,54 @@ std::vector<std::size_t> ranks_with_terms(const std::vector<Point>& points, unsi
 
 } // namespace
 
-// The greedy coverage elimination, with its cost shares summed in integers
-// and its rounds, against the reference's scans from scratch each round: the
-// removal order to a fifth, a half and nine tenths (one round), and the
-// ranks through the kept points, sequentially and in parallel.
-TEST_CASE("Default mode, coverage elimination: removal order and ranks equal the reference's",
+// Either elimination against the reference's scans from scratch (each round
+// of the greedy coverage elimination, each removal of weighted sample
+// elimination): the removal order to a fifth, a half and nine tenths (one
+// round of the greedy), and the ranks through the kept points from a fifth,
+// sequentially and in parallel.
+TEST_CASE("Default mode: with either elimination, removal order and ranks equal the reference's",
           "[default][reference][coverage elimination]")
 {
   test_parallel::require_tbb();
-  const ESI::Default_mode_terms terms = with_coverage_elimination();
-  const reference::Terms reference_with = reference_terms(terms);
-  test_clouds::Cloud stray = test_clouds::wavy_surface(300, 0.01, 3);
-  stray.name += " and a stray point";
-  stray.points.emplace_back(500., 500., 500.);
-  const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
-                                          Setting{ test_clouds::bent_grid(20), 8 }, Setting{ stray, 8 } };
-  for (const Setting& setting : settings)
-    for (double feature_weight : { 3., 0. })
-    {
-      ES::Options options;
-      options.feature_weight = feature_weight;
-      const std::vector<Point>& points = setting.cloud.points;
-      const reference::Field field = reference::feature_field(points, setting.k, options, reference_with);
-      const ESI::Array<ESI::Working_point> input(points.begin(), points.end());
-      for (std::size_t tenths : { std::size_t(2), std::size_t(5), std::size_t(9) })
+  for (const ESI::Default_mode_terms& terms : { ESI::Default_mode_terms(), with_weighted_sample_elimination() })
+  {
+    const reference::Terms reference_with = reference_terms(terms);
+    test_clouds::Cloud stray = test_clouds::wavy_surface(300, 0.01, 3);
+    stray.name += " and a stray point";
+    stray.points.emplace_back(500., 500., 500.);
+    const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
+                                            Setting{ test_clouds::bent_grid(20), 8 }, Setting{ stray, 8 } };
+    for (const Setting& setting : settings)
+      for (double feature_weight : { 3., 0. })
       {
-        const std::size_t target = points.size() * tenths / 10;
-        INFO(setting.cloud.name << ", feature weight " << feature_weight << ", target " << target);
-        const std::vector<std::size_t> expected = reference::removal_order(points, field, target, reference_with);
-        CHECK(as_positions(ESI::removal_order_with_terms<CGAL::Sequential_tag>(input, setting.k, target, options,
-                                                                              terms)) == expected);
-        CHECK(as_positions(test_parallel::on_two_threads_or_more([&] {
-                return ESI::removal_order_with_terms<test_parallel::Parallel_tag>(input, setting.k, target, options,
-                                                                                  terms);
-              })) == expected);
+        ES::Options options;
+        options.feature_weight = feature_weight;
+        const std::vector<Point>& points = setting.cloud.points;
+        const reference::Field field = reference::feature_field(points, setting.k, options, reference_with);
+        const ESI::Array<ESI::Working_point> input(points.begin(), points.end());
+        for (std::size_t tenths : { std::size_t(2), std::size_t(5), std::size_t(9) })
+        {
+          const std::size_t target = points.size() * tenths / 10;
+          INFO(setting.cloud.name << ", feature weight " << feature_weight << ", target " << target
+                                  << (terms.coverage_elimination ? "" : ", weighted sample elimination"));
+          const std::vector<std::size_t> expected = reference::removal_order(points, field, target, reference_with);
+          CHECK(as_positions(ESI::removal_order_with_terms<CGAL::Sequential_tag>(input, setting.k, target, options,
+                                                                                terms)) == expected);
+          CHECK(as_positions(test_parallel::on_two_threads_or_more([&] {
+                  return ESI::removal_order_with_terms<test_parallel::Parallel_tag>(input, setting.k, target, options,
+                                                                                    terms);
+                })) == expected);
+        }
+        const std::size_t level = points.size() / 5;
+        INFO(setting.cloud.name << ", feature weight " << feature_weight << ", ranks from " << level
+                                << (terms.coverage_elimination ? "" : ", weighted sample elimination"));
+        const std::vector<std::size_t> expected = reference::ranks(points, field, level, reference_with);
+        CHECK(ranks_with_terms<CGAL::Sequential_tag>(points, setting.k, level, options, terms) == expected);
+        CHECK(test_parallel::on_two_threads_or_more([&] {
+                return ranks_with_terms<test_parallel::Parallel_tag>(points, setting.k, level, options, terms);
+              }) == expected);
       }
-      const std::size_t level = points.size() / 5;
-      INFO(setting.cloud.name << ", feature weight " << feature_weight << ", ranks from " << level);
-      const std::vector<std::size_t> expected = reference::ranks(points, field, level, reference_with);
-      CHECK(ranks_with_terms<CGAL::Sequential_tag>(points, setting.k, level, options, terms) == expected);
-      CHECK(test_parallel::on_two_threads_or_more([&] {
-              return ranks_with_terms<test_parallel::Parallel_tag>(points, setting.k, level, options, terms);
-            }) == expected);
-    }
+  }
 }
 
 namespace {

@@ -3,15 +3,17 @@
 //
 // The default mode (Mode::weighted_elimination) computed from the user
 // manual's definitions with code of its own: an independent reference for the
-// package. Neighbours come from linear scans, every point's weight is summed
-// from scratch before every removal, and every nearest point of the
-// relocation is found by a scan. Of the package it uses only the public Options; of CGAL,
+// package. Neighbours come from linear scans; every point's nearest and next
+// present points, and every cost, are found from scratch in every round of
+// the greedy coverage elimination, and every weight before every removal
+// of weighted sample elimination (the ablation's alternative); every nearest
+// point of the relocation is found by a scan. Of the package it uses only the public Options; of CGAL,
 // the kernel and the jet fitting.
 //
 // Every formula runs its floating-point operations in the package's order, so
 // that the fields agree to the last bits and the removal orders exactly: a
 // last-bit difference in a scale can move a pair weight by one unit, and a
-// removal order compares sums of such weights.
+// removal order compares sums of such weights or costs.
 
 #ifndef ENTROPY_SIMPLIFICATION_TEST_REFERENCE_ELIMINATION_H
 #define ENTROPY_SIMPLIFICATION_TEST_REFERENCE_ELIMINATION_H
@@ -41,15 +43,13 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
 
-// The terms the default mode adds to weighted sample elimination, each of
-// which the ablation switches off: the manual's "What each term contributes".
+// The terms of the default mode, each of which the ablation switches off:
+// the manual's "What each term contributes".
 struct Terms
 {
-  bool coverage_elimination = false; // the greedy coverage elimination, not Yuksel's
+  bool coverage_elimination = true; // the greedy coverage elimination, not Yuksel's
   bool coarse_scale = true;   // the strength is the greater of the two scales'
   bool feature_budget = true; // the weight is lowered where features cover much
-  bool density = true;        // the radius follows the input's density
-  bool halving_stages = true; // each stage halves the count
   bool relocation = true;     // the kept points are relocated
   bool medians = true;        // each cell keeps its median
   bool radius_bound = true;   // within the radius bound
@@ -414,7 +414,7 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
     int exponent = 0;
     const double significand =
       std::frexp(radius_factor(strength[p], field.weight, area[p], typical_area,
-                               terms.density && !terms.coverage_elimination),
+                               !terms.coverage_elimination),
                  &exponent);
     field.scale.push_back(std::ldexp(std::round(significand * 1073741824.), exponent - 30));
     field.effective_area += area[p] / (field.scale[p] * field.scale[p]);
@@ -513,10 +513,10 @@ inline std::size_t most_crowded(const std::vector<std::int64_t>& weights, const 
 }
 
 // The input positions of the removed points, first removed first, from
-// the `present` points (all of them when empty); in one stage when not
-// `halving`.
+// the `present` points (all of them when empty), by weighted sample
+// elimination in stages that halve the count.
 inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, const Field& field, std::size_t target,
-                                          std::vector<bool> present = {}, bool halving = true)
+                                          std::vector<bool> present = {})
 {
   if (present.empty())
     present.assign(points.size(), true);
@@ -524,8 +524,7 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
   std::vector<std::size_t> removed;
   while (count > target)
   {
-    Stage stage = halving ? stage_from(count, target, field.effective_area)
-                          : stage_to(count, target, field.effective_area);
+    Stage stage = stage_from(count, target, field.effective_area);
     stage.exponent = weight_exponent(stage.target, points.size());
     const std::vector<std::int64_t> weights = pair_weights(points, field.scale, stage);
     for (; count > stage.target; --count)
@@ -827,7 +826,7 @@ inline std::vector<std::size_t> removal_order(const std::vector<Point>& points, 
 {
   std::vector<std::size_t> removed = terms.coverage_elimination
                                        ? coverage_eliminate(points, field, target)
-                                       : eliminate(points, field, target, {}, terms.halving_stages);
+                                       : eliminate(points, field, target);
   if ((!terms.relocation && !terms.coverage_swaps) || removed.empty())
     return removed;
   std::vector<bool> eliminated(points.size(), true);
@@ -931,12 +930,12 @@ inline void swap_at_boundary(const std::vector<Point>& points, const std::vector
 }
 
 // At a boundary, then: each point the stage removed (in removal order) brings its
-// cell into that of the present point nearest it among those of nonzero
-// weight, if any; then each cell with a present point keeps, among that
+// cell into that of the present point nearest it among those `adjacent` to
+// it, if any; then each cell with a present point keeps, among that
 // point and the stage's removed points of the cell, the one whose distances
 // to the cell's points, summed in input order, sum least (ties: the lowest
 // position), which takes the other's place in `stage_removed`.
-inline void relocate_boundary(const std::vector<Point>& points, const std::vector<std::int64_t>& weights,
+inline void relocate_boundary(const std::vector<Point>& points, const Adjacency& adjacent,
                               std::vector<bool>& present, std::vector<std::size_t>& label,
                               std::vector<std::size_t>& stage_removed)
 {
@@ -945,7 +944,7 @@ inline void relocate_boundary(const std::vector<Point>& points, const std::vecto
   {
     Neighbor nearest{ std::numeric_limits<double>::infinity(), n };
     for (std::size_t q = 0; q < n; ++q)
-      if (present[q] && weights[r * n + q] != 0)
+      if (present[q] && adjacent(r, q))
         nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
     if (nearest.second == n)
       continue;
@@ -1002,8 +1001,33 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
     if (stage.target > 1)
     {
       swap_at_boundary(points, field.scale, weights, present, stage_removed);
-      relocate_boundary(points, weights, present, label, stage_removed);
+      relocate_boundary(
+        points, [&](std::size_t a, std::size_t b) { return weights[a * n + b] != 0; }, present, label, stage_removed);
     }
+    removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
+  }
+  return removed;
+}
+
+// The removal order of the `present` points down to one by the greedy
+// coverage elimination, in stages that end at the level boundaries, each
+// relocated, every present point adjacent to every removed one.
+inline std::vector<std::size_t> coverage_eliminate_by_boundaries(const std::vector<Point>& points,
+                                                                 const Field& field, std::vector<bool> present)
+{
+  const std::size_t n = points.size();
+  std::vector<std::size_t> label = cells_of_present(points, present);
+  std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
+  std::vector<std::size_t> removed;
+  while (count > 1)
+  {
+    const std::size_t end = stage_end(count, n);
+    std::vector<std::size_t> stage_removed = coverage_eliminate(points, field, end, present);
+    for (std::size_t r : stage_removed)
+      present[r] = false;
+    count = end;
+    if (end > 1)
+      relocate_boundary(points, everywhere, present, label, stage_removed);
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
   }
   return removed;
@@ -1023,7 +1047,7 @@ inline std::vector<std::size_t> ranks(const std::vector<Point>& points, const Fi
   std::vector<bool> kept(n, true);
   for (std::size_t p : removed)
     kept[p] = false;
-  for (std::size_t p : terms.coverage_elimination ? coverage_eliminate(points, field, 1, kept)
+  for (std::size_t p : terms.coverage_elimination ? coverage_eliminate_by_boundaries(points, field, kept)
                                                   : eliminate_by_boundaries(points, field, kept))
     removed.push_back(p);
   std::vector<std::size_t> rank(n, 0); // the one point never removed keeps 0

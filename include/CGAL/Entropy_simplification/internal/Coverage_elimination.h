@@ -14,6 +14,7 @@
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Level_cells.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -23,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -79,18 +81,15 @@ public:
       m_count(points.size())
   {}
 
-  // Computes the field from the k nearest neighbours of every point, without
-  // the density term: the sum of distances follows the input's density
-  // itself. `progress` receives the fraction done, on the calling thread;
+  // Computes the field from the k nearest neighbours of every point.
+  // `progress` receives the fraction done, on the calling thread;
   // returns false when it asked to stop.
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    Default_mode_terms field_terms = m_terms;
-    field_terms.density = false;
     Array<Index> knn;
     return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) &&
-           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, field_terms, std::move(knn), m_field,
+           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
                                                      [&](double f) { return progress(0.5 + 0.5 * f); });
   }
 
@@ -111,6 +110,12 @@ public:
   }
   const Elimination_field& field() const { return m_field; }
 
+  // Makes the next remove_down_to() end its rounds at the level boundaries
+  // (see level_boundary_below) and relocate each of them (see Level_cells),
+  // so that the prefixes a ranking passes through are nearly as good as
+  // direct calls'.
+  void relocate_level_boundaries() { m_relocates_levels = true; }
+
   // Removes points down to `target` (at least 1), calling `removed(i)` after
   // each removal; stops early, returning false, when it returns false.
   template <typename ConcurrencyTag, typename Removed>
@@ -118,14 +123,19 @@ public:
   {
     if (!m_tree)
       follow_present<ConcurrencyTag>();
+    if (std::exchange(m_relocates_levels, false))
+      m_level_cells.emplace(indices_by_input_position(m_points), m_nearest);
     while (m_count > target)
     {
-      const Array<Index> round = removable_in_round<ConcurrencyTag>(m_count - target);
-      remove<ConcurrencyTag>(round);
-      for (Index p : round)
+      const Array<Index> removals =
+        m_level_cells
+          ? remove_level<ConcurrencyTag>((std::max)(target, level_boundary_below(m_count, m_points.size())), target)
+          : remove_round<ConcurrencyTag>(target);
+      for (Index p : removals)
         if (!removed(p))
           return false;
     }
+    m_level_cells.reset();
     return true;
   }
 
@@ -200,6 +210,38 @@ private:
     m_next[i] = next;
     m_share[i] = next == none_index ? 0 : removal_share(m_weight[i], to_nearest, to_next, m_unit);
     m_cost[nearest].fetch_add(m_share[i], std::memory_order_relaxed);
+  }
+
+  // One round, down to `target` at most: its removals, by cost.
+  template <typename ConcurrencyTag>
+  Array<Index> remove_round(std::size_t target)
+  {
+    const Array<Index> round = removable_in_round<ConcurrencyTag>(m_count - target);
+    remove<ConcurrencyTag>(round);
+    return round;
+  }
+
+  // Rounds down to the level `boundary`, which is relocated unless it is
+  // the `target`: the removals, each point that the relocation brings back
+  // replaced by the point it replaces. The removed points join the cells of
+  // their nearest present points, whose medians move in, and every input
+  // point then follows the relocated points.
+  template <typename ConcurrencyTag>
+  Array<Index> remove_level(std::size_t boundary, std::size_t target)
+  {
+    Array<Index> removals;
+    while (m_count > boundary)
+    {
+      const Array<Index> round = remove_round<ConcurrencyTag>(boundary);
+      removals.insert(removals.end(), round.begin(), round.end());
+    }
+    if (boundary == target)
+      return removals;
+    for (Index r : removals)
+      m_level_cells->join(r, m_nearest[r]);
+    m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, removals);
+    follow_present<ConcurrencyTag>();
+    return removals;
   }
 
   // The points the next round removes, by cost: those of the first tenth of
@@ -279,6 +321,10 @@ private:
   // a tree of the present points, from which the removed ones are left out
   // until it holds twice as many as are present, when it is built again
   std::optional<Point_tree> m_tree;
+  // whether a ranking's level boundaries are relocated, and their cells
+  // while it runs
+  bool m_relocates_levels = false;
+  std::optional<Level_cells> m_level_cells;
   std::size_t m_tree_size = 0;
   Array<double> m_weight;
   double m_unit = 1.;

@@ -13,28 +13,23 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// What the default mode adds to Yuksel's weighted sample elimination (2015),
-// besides the entropy term itself (Options::feature_weight, 0 to switch it
+// What the default mode is made of, besides the entropy term itself (Options::feature_weight, 0 to switch it
 // off). Every public function runs with all of them; the benchmark's ablation
 // (benchmark/bench_ablation.cpp) switches each off in turn, and the tests
 // check each switch against the independent reference.
 struct Default_mode_terms
 {
   // the elimination is the greedy coverage elimination (see
-  // Coverage_elimination) rather than weighted sample elimination
-  bool coverage_elimination = false;
+  // Coverage_elimination), rather than Yuksel's weighted sample elimination
+  // (2015) with a radius that follows the input's density (see
+  // density_scale), in stages that halve the count (see next_stage)
+  bool coverage_elimination = true;
   // the feature strength is the greater of the fine and the coarse scale's
   // (see coarse_feature_strength), rather than the fine scale's alone
   bool coarse_scale = true;
   // the feature weight is lowered where features cover much of the area
   // (see budgeted_feature_weight)
   bool feature_budget = true;
-  // the interaction radius follows the input's density (see density_scale)
-  bool density = true;
-  // the stages halve the count (see next_stage), rather than one stage going
-  // straight to the target; the stages of a ranking through the kept points
-  // end at the level boundaries either way
-  bool halving_stages = true;
   // the kept points are relocated in Lloyd's manner (see relocate_within_input);
   // a ranking's level boundaries are relocated either way (see Level_cells)
   bool relocation = true;
@@ -70,12 +65,11 @@ inline std::vector<Term_switched_off> each_term_switched_off()
   };
   off("coarse scale of the feature strength", &Default_mode_terms::coarse_scale);
   off("feature budget", &Default_mode_terms::feature_budget);
-  off("density term", &Default_mode_terms::density);
-  off("halving stages (one stage)", &Default_mode_terms::halving_stages);
   off("relocation", &Default_mode_terms::relocation);
   off("medians (members nearest the centroids)", &Default_mode_terms::medians);
   off("radius bound of the medians", &Default_mode_terms::radius_bound);
   off("coverage swaps", &Default_mode_terms::coverage_swaps);
+  off("greedy coverage elimination (weighted sample elimination)", &Default_mode_terms::coverage_elimination);
   return each;
 }
 

@@ -157,8 +157,10 @@ inline double with_30_bit_significand(double x)
 }
 
 // The factor of each point's interaction radius: the feature term, whose
-// weight the budget may lower, times the density term (either switched off
-// by `terms`), rounded to 30 bits. Also sets the effective area, the
+// weight the budget may lower (unless `terms` switch the budget off), times
+// the density term with weighted sample elimination only (the greedy
+// coverage elimination's sum of distances follows the input's density
+// itself), rounded to 30 bits. Also sets the effective area, the
 // sampled area weighted by the density each scale asks for (1 / scale^2),
 // summed in input order so that it does not depend on the internal order.
 template <typename ConcurrencyTag>
@@ -182,7 +184,7 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
     n,
     [&](std::size_t i) {
       field.scale[i] = with_30_bit_significand(interaction_scale(strength[i], weight) *
-                                               (terms.density ? density_scale(area[i], typical_area) : 1.));
+                                               (terms.coverage_elimination ? 1. : density_scale(area[i], typical_area)));
       weighted_area[points.input_position[i]] = area[i] / (field.scale[i] * field.scale[i]);
     },
     [](std::size_t) { return true; });

@@ -180,8 +180,7 @@ public:
       Elimination_stage stage =
         m_level_cells ? stage_down_to(m_count, (std::max)(target, level_boundary_below(m_count, m_points.size())),
                                       m_field.effective_area)
-                      : m_terms.halving_stages ? next_stage(m_count, target, m_field.effective_area)
-                                               : stage_down_to(m_count, target, m_field.effective_area);
+                      : next_stage(m_count, target, m_field.effective_area);
       stage.eighth_power = keeps_most_points(stage.target, m_points.size());
       gather_neighbors<ConcurrencyTag>(stage);
       Array<Index> stage_removed = eliminate<ConcurrencyTag>(stage);

@@ -151,12 +151,14 @@ bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& poin
 
 // Orders the points a greedy coverage run kept, once relocated: the
 // elimination goes on among them down to one point, each input point
-// following its nearest and next kept points from the relocated ones.
+// following its nearest and next kept points from the relocated ones, its
+// rounds ending at the level boundaries, each relocated (see Level_cells).
 template <typename ConcurrencyTag>
 bool eliminate_the_kept(Coverage_elimination& engine, const Indexed_points& points, Engine_run& run,
                         Array<Index>, const std::function<bool(double)>& callback)
 {
   engine.set_present(present_after(run, points.size()));
+  engine.relocate_level_boundaries();
   return remove_down_to_one<ConcurrencyTag>(engine, points, run, callback);
 }
 
