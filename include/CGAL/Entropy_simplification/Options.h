@@ -44,10 +44,12 @@ enum class Normal_estimation
 */
 enum class Mode
 {
-  /// The default: weighted sample elimination (Yuksel 2015) on the input's
-  /// spacing, whose interaction radius shrinks where the entropy of the
-  /// normals of a neighbourhood marks a feature, so that features keep more
-  /// points and flat regions thin evenly, without holes.
+  /// The default: a greedy elimination that removes the points whose removal
+  /// raises least the distances from the input to the kept points, weighted
+  /// up where the entropy of the normals of a neighbourhood marks a feature,
+  /// so that features keep more points and flat regions thin evenly,
+  /// without holes. (The name is that of the weighted sample elimination,
+  /// Yuksel 2015, that the mode ran before; see the user manual.)
   weighted_elimination,
   /// The method of the paper (Eq. 1-5), with exact progressive updates.
   paper
@@ -83,10 +85,9 @@ struct Options
     regions would: 45% at the default. A greater weight therefore always
     raises the density aimed at on features, at a cost in mean distance that
     `benchmark/RESULTS.md` measures (section "Feature emphasis against
-    coverage"). 0 switches the entropy term off: plain weighted sample
-    elimination. Must lie in [0, 100]: the flat regions' interaction radius
-    grows with the weight, and so do the neighbour lists of the elimination,
-    its memory and its time (at 10^4, 40 KB per point).
+    coverage"). 0 switches the entropy term off: every input point then
+    weighs the same in the distances the elimination keeps low. Must lie in
+    [0, 100].
   */
   double feature_weight = 3.;
 

@@ -89,8 +89,8 @@ Array<double> importance_of_distinct_points(Array<Working_point>&& points, unsig
      in `[0, 1]`: 0 where the normals of the point's neighbourhood vary no
      more than twice the cloud's own noise, 1 from ten times the noise, at
      the scale of `k` or at the coarse scale, whichever is greater. The
-     interaction radius of the point shrinks with it, so that points of
-     greater importance are kept denser, by up to
+     point's weight in the distances the elimination keeps low grows with
+     it, so that points of greater importance are kept denser, by up to
      `1 + Options::feature_weight`.
 
    A copy of a coincident point gets the importance of its first copy.

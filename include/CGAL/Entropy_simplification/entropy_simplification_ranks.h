@@ -86,9 +86,9 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    `CGAL::entropy_simplify_point_set()` asking for `m` points keeps, for every
    `m >= k + 1`. The level named parameters are not needed.
 
-   <b>`Mode::weighted_elimination` (the default).</b> Its stages and its
-   relocation depend on the target, so that no order has every prefix equal
-   to a direct call's result. The ranks make one level exact, the level `L`
+   <b>`Mode::weighted_elimination` (the default).</b> Its relocation
+   depends on the target, so that no order has every prefix equal to a
+   direct call's result. The ranks make one level exact, the level `L`
    given by `number_of_output_points` or `select_percentage` (all the points
    by default), and relocate the round fractions below it:
    - the first `L` points by rank are exactly the points a call of
@@ -97,7 +97,9 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
      prefix is the state of its elimination when that many points remained,
      before the relocation and the coverage swaps that end the call;
    - the `L` kept points are ordered by going on with the elimination among
-     them down to one point, in stages that end at the level boundaries:
+     them down to one point, every input point following its nearest and
+     next kept points among them, in stages that end at the level
+     boundaries:
      50, 20, 10, 5, 2, 1, 0.5, 0.2, 0.1%, ... of the distinct points,
      rounded up. At each boundary, each input point belongs to a cell
      with one present point: at first, the kept point nearest it; a point

@@ -94,19 +94,23 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    `Options::normal_estimation` selects jet fitting instead), the two methods
    of `Options::mode` are:
 
-   <b>`Mode::weighted_elimination` (the default).</b> Weighted sample
-   elimination (Yuksel 2015): each point is weighed by the points within
-   twice its interaction radius, and the most crowded point is removed, its
-   weight taken off its neighbours', until the target; the radius is set for
-   the target count on the area the points sample, in stages that halve the
-   count. The radius shrinks where the normals of `p` and `N(p)` vary, so
-   that features keep up to `1 + Options::feature_weight` times the density
-   of flat regions: the variation is the entropy of the eigenvalues of the
-   orientation tensor of these normals, independent of their orientation and
-   of any reference plane, measured against the cloud's own noise (its
-   median), at the scale of `k` and at a coarser scale. The radius also
-   grows where the input is sparse, so that the kept density follows the
-   input's to the power 2/3. Two iterations of a relaxation restricted to the
+   <b>`Mode::weighted_elimination` (the default).</b> A greedy coverage
+   elimination: every input point follows its nearest and next nearest kept
+   point, and the kept points are removed, in rounds, by least cost, the
+   increase of the weighted sum of the distances from the input points to
+   their nearest kept point that a removal alone would cause. Each round
+   removes every kept point whose cost is below that of each kept point it
+   shares an input point with (as nearest and next), among the tenth of
+   least cost (ties: the lowest input position), until the target. An input
+   point weighs `(1 + w s)^(3/2)`, `s` its feature strength and `w`
+   `Options::feature_weight`, so that features keep up to `1 + w` times the
+   density of flat regions; the feature strength is the variation of the
+   normals of `p` and `N(p)`, the entropy of the eigenvalues of their
+   orientation tensor, independent of their orientation and of any
+   reference plane, measured against the cloud's own noise (its median), at
+   the scale of `k` and at a coarser scale. Where the input is sparse, the
+   kept density follows the input's to the power 2/3, the density that
+   minimises such a sum. Two iterations of a relaxation restricted to the
    input points end it: each kept point gives way to the median of its
    Voronoi cell among the input points, the member whose distances to the
    others sum least among the four nearest the cell's centroid, unless that

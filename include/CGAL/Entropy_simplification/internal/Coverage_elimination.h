@@ -135,7 +135,7 @@ public:
         if (!removed(p))
           return false;
     }
-    m_level_cells.reset();
+    release();
     return true;
   }
 
@@ -153,6 +153,20 @@ private:
   };
   // Costs are read between the passes that change them only.
   Key key(Index s) const { return Key{ m_cost[s].load(std::memory_order_relaxed), m_points.input_position[s] }; }
+
+  // The relocation that follows a run needs none of its memory, and a run
+  // that follows it starts from the present points alone.
+  void release()
+  {
+    m_level_cells.reset();
+    m_tree.reset();
+    Array<Index>().swap(m_listed);
+    Array<double>().swap(m_weight);
+    Array<Index>().swap(m_nearest);
+    Array<Index>().swap(m_next);
+    Array<std::int64_t>().swap(m_share);
+    Array<std::atomic<std::int64_t> >().swap(m_cost);
+  }
 
   // Every point's nearest and next present point and its share, and the
   // costs, from the present points alone.
