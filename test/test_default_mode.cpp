@@ -349,9 +349,11 @@ std::vector<std::size_t> ranks_with_terms(const std::vector<Point>& points, unsi
 
 // Either elimination against the reference's scans from scratch (each round
 // of the greedy coverage elimination, each removal of weighted sample
-// elimination): the removal order to a fifth, a half and nine tenths (one
-// round of the greedy), and the ranks through the kept points from a fifth,
-// sequentially and in parallel.
+// elimination): the removal order to a fifth, a half and nine tenths, and
+// the ranks through the kept points from a fifth, sequentially and in
+// parallel. A stray point thousands of spacings away, and one so far that
+// its shares reach their bound (see largest_share); a grid whose costs all
+// tie.
 TEST_CASE("Default mode: with either elimination, removal order and ranks equal the reference's",
           "[default][reference][coverage elimination]")
 {
@@ -361,9 +363,13 @@ TEST_CASE("Default mode: with either elimination, removal order and ranks equal 
     const reference::Terms reference_with = reference_terms(terms);
     test_clouds::Cloud stray = test_clouds::wavy_surface(300, 0.01, 3);
     stray.name += " and a stray point";
+    test_clouds::Cloud far_stray = stray;
+    far_stray.name += ", far";
     stray.points.emplace_back(500., 500., 500.);
+    far_stray.points.emplace_back(1e9, 1e9, 1e9);
     const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
-                                            Setting{ test_clouds::bent_grid(20), 8 }, Setting{ stray, 8 } };
+                                            Setting{ test_clouds::bent_grid(20), 8 }, Setting{ stray, 8 },
+                                            Setting{ far_stray, 8 } };
     for (const Setting& setting : settings)
       for (double feature_weight : { 3., 0. })
       {

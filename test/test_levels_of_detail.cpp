@@ -148,10 +148,10 @@ TEST_CASE("Ranks, default mode: equal the reference's, sequentially and in paral
 {
   test_parallel::require_tbb();
   const unsigned int k = 5;
-  // the islands: their points removed at a boundary have no present point
-  // among their neighbours in the stage, where the boundary's swaps search;
-  // there they differ from swaps searched among all the points (with the
-  // reference searching all, the ranks differ at levels 129, 518 and 648)
+  // the islands: a boundary's cells then join across gaps, as each point
+  // removed joins the cell of its nearest present point, however far (with
+  // weighted sample elimination, test_default_mode.cpp, they joined only
+  // the points within the stage's reach)
   for (const test_clouds::Cloud& cloud :
        { test_clouds::small_replica(720, 80, 0.002, 11), test_clouds::wavy_surface(800, 0.01, 4),
          test_clouds::wavy_with_islands(600, 6, 8, 1) })
@@ -159,7 +159,7 @@ TEST_CASE("Ranks, default mode: equal the reference's, sequentially and in paral
     const ES::Options options;
     const reference::Field field = reference::feature_field(cloud.points, k, options);
     REQUIRE(field.coarse_count >= k + 1);
-    // level 4n/5: a stage with the eighth power of the weight before the level
+    // level 4n/5: a few rounds before the level
     for (std::size_t level :
          { std::size_t(1), cloud.points.size() / 5, cloud.points.size() * 4 / 5, cloud.points.size() })
     {

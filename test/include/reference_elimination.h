@@ -549,9 +549,11 @@ inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const st
 {
   std::vector<Neighbor> all;
   for (std::size_t q = 0; q < points.size(); ++q)
-    if (present[q])
-      all.emplace_back(q == p ? 0. : squared_distance(points[p], points[q]), q);
+    if (present[q] && q != p)
+      all.emplace_back(squared_distance(points[p], points[q]), q);
   std::sort(all.begin(), all.end());
+  if (present[p])
+    all.insert(all.begin(), Neighbor{ 0., p });
   std::vector<std::pair<double, std::size_t> > two;
   for (std::size_t j = 0; j < (std::min)(std::size_t(2), all.size()); ++j)
     two.emplace_back(std::sqrt(all[j].first), all[j].second);
@@ -562,13 +564,15 @@ inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const st
 // `target`. Each point weighs (smallest scale / its scale)^3; what removing
 // its nearest present point costs it is its weight times the distance to
 // its next one less the distance to the nearest, in units of 2^-20 of the
-// typical spacing (the side of the effective area over n), truncated, at
-// most 2^40. A present point's cost sums those of the points it is nearest
-// of. Each round, from the costs of its start: a present point is a
-// candidate when it comes (lowest cost, then lowest input position) before
-// every present point with which it is some point's nearest and next, and
-// not after the tenth present point (at least the first); the candidates
-// are removed in that order, at most down to `target`.
+// typical spacing (the side of the effective area over n, the clouds here
+// having no coincident points), truncated, at most 2^40 and at most the
+// largest 64-bit integer over n. A present point's cost sums those of the
+// points it is nearest of. Each round, from the costs of its start: a
+// present point is a candidate when it comes (lowest cost, then lowest
+// scrambled input position) before every present point with which it is
+// some point's nearest and next, and not after the tenth present point (at
+// least the first); the candidates are removed in that order, at most down
+// to `target`.
 inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& points, const Field& field,
                                                    std::size_t target, std::vector<bool> present = {})
 {
@@ -577,6 +581,8 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
     present.assign(n, true);
   const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
   const double unit = std::sqrt(field.effective_area / double(n)) / 1048576.;
+  const std::int64_t largest =
+    (std::min)(std::int64_t(1099511627776), std::numeric_limits<std::int64_t>::max() / std::int64_t(n));
   std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
   std::vector<std::size_t> removed;
   while (count > target)
@@ -588,23 +594,23 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
       const auto two = nearest_two_present(points, present, p);
       const double weight = std::pow(smallest / field.scale[p], 3.);
       const double share = weight * (two[1].first - two[0].first) / unit;
-      cost[two[0].second] += share < 1099511627776. ? std::int64_t(share) : std::int64_t(1099511627776);
+      cost[two[0].second] += share < double(largest) ? std::int64_t(share) : largest;
       nearest_and_next.emplace_back(two[0].second, two[1].second);
     }
-    const auto key = [&](std::size_t s) { return std::make_pair(cost[s], s); };
+    const auto key = [&](std::size_t s) { return std::make_pair(cost[s], scramble(std::uint32_t(s))); };
     std::vector<bool> candidate = present;
     for (const auto& [a, b] : nearest_and_next)
       candidate[key(a) < key(b) ? b : a] = false;
-    std::vector<std::pair<std::int64_t, std::size_t> > keys;
+    std::vector<std::pair<std::int64_t, std::uint32_t> > keys;
     for (std::size_t s = 0; s < n; ++s)
       if (present[s])
         keys.push_back(key(s));
     std::sort(keys.begin(), keys.end());
     const auto tenth = keys[(std::max)(std::size_t(1), count / 10) - 1];
-    std::vector<std::pair<std::int64_t, std::size_t> > round;
+    std::vector<std::pair<std::pair<std::int64_t, std::uint32_t>, std::size_t> > round; // (key, point)
     for (std::size_t s = 0; s < n; ++s)
       if (candidate[s] && !(tenth < key(s)))
-        round.push_back(key(s));
+        round.emplace_back(key(s), s);
     std::sort(round.begin(), round.end());
     for (std::size_t j = 0; j < round.size() && count > target; ++j, --count)
     {

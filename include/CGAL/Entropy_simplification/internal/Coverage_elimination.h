@@ -10,19 +10,22 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
-#include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
+#include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Level_cells.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
+
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -53,25 +56,35 @@ inline double share_unit(const Elimination_field& field, std::size_t n)
   return std::sqrt(field.effective_area / double((std::max)(n, std::size_t(1)))) / 1048576.;
 }
 
+// The most a point's share of a cost may be (see removal_share) among `n`
+// points: 2^40 units, a million spacings, unless the shares of all `n`
+// points at that bound could overflow a cost, as with a point far from a
+// scan of more than 2^23 points when a ranking comes down to two points.
+inline std::int64_t largest_share(std::size_t n)
+{
+  return (std::min)(std::int64_t(1) << 40,
+                    std::numeric_limits<std::int64_t>::max() / std::int64_t((std::max)(n, std::size_t(1))));
+}
+
 // What removing point `a` costs point `i`, whose nearest present point it is
-// and whose next is at `next` from it: its weight times the distance it
-// then gains, in units of `unit`, at most 2^40 (a million spacings), so that
-// the shares of 2^23 points at that bound still fit a cost. The distance to
-// `a` is 0 when `i` is `a`.
-inline std::int64_t removal_share(double weight, double to_nearest, double to_next, double unit)
+// and whose next is at `to_next` from it: its weight times the distance it
+// then gains, in units of `unit`, truncated, at most `largest`. The distance
+// to `a` is 0 when `i` is `a`.
+inline std::int64_t removal_share(double weight, double to_nearest, double to_next, double unit,
+                                  std::int64_t largest)
 {
   const double share = weight * (to_next - to_nearest) / unit;
-  return share < 1099511627776. ? std::int64_t(share) : std::int64_t(1099511627776);
+  return share < double(largest) ? std::int64_t(share) : largest;
 }
 
 // The elimination on the present points. Each input point follows its
 // nearest and next nearest present point (the neighbour order), and each
 // present point's cost is the sum of the shares of the points it is the
-// nearest of. Each round removes the present points that come first (the
-// lowest cost, ties to the lowest input position) among those they share an
-// input point with, among the tenth of the present points that come first:
-// none of them is the nearest and next of one point, so each point loses at
-// most one of the two. The round's removals, by cost, are the order.
+// nearest of. Each round removes the present points that come first (see
+// Key) among those they share an input point with, among the tenth of the
+// present points that come first: none of them is the nearest and next of
+// one point, so each point loses at most one of the two. The round's
+// removals, in that order, are the order of removal.
 class Coverage_elimination
 {
 public:
@@ -100,7 +113,6 @@ public:
   {
     m_present = std::move(present);
     m_count = std::size_t(std::count(m_present.begin(), m_present.end(), char(1)));
-    m_tree.reset();
   }
   // The normals of the points `subset`, as the field estimated them.
   template <typename ConcurrencyTag>
@@ -121,38 +133,48 @@ public:
   template <typename ConcurrencyTag, typename Removed>
   bool remove_down_to(std::size_t target, const Removed& removed)
   {
-    if (!m_tree)
-      follow_present<ConcurrencyTag>();
-    if (std::exchange(m_relocates_levels, false))
+    CGAL_precondition(target >= 1);
+    const bool relocates_levels = std::exchange(m_relocates_levels, false);
+    if (m_count <= target)
+      return true;
+    follow_present<ConcurrencyTag>();
+    if (relocates_levels)
       m_level_cells.emplace(indices_by_input_position(m_points), m_nearest);
-    while (m_count > target)
+    bool completed = true;
+    while (completed && m_count > target)
     {
       const Array<Index> removals =
         m_level_cells
           ? remove_level<ConcurrencyTag>((std::max)(target, level_boundary_below(m_count, m_points.size())), target)
           : remove_round<ConcurrencyTag>(target);
-      for (Index p : removals)
-        if (!removed(p))
-          return false;
+      for (std::size_t r = 0; completed && r < removals.size(); ++r)
+        completed = removed(removals[r]);
     }
     release();
-    return true;
+    return completed;
   }
 
 private:
   // A point's place in the order of removal: the lowest cost first, ties to
-  // the lowest input position.
+  // the lowest scrambled input position (see scrambled). On a regular grid
+  // in row order, every cost ties, and with ties to the lowest position
+  // each point's next, the neighbour of lowest position, would come before
+  // it: the rounds would remove one point each. Scrambled, about one point
+  // in a few comes first among its neighbours.
   struct Key
   {
     std::int64_t cost;
-    Index input_position;
+    std::uint32_t tie;
     bool operator<(const Key& other) const // comes first
     {
-      return cost < other.cost || (cost == other.cost && input_position < other.input_position);
+      return cost < other.cost || (cost == other.cost && tie < other.tie);
     }
   };
   // Costs are read between the passes that change them only.
-  Key key(Index s) const { return Key{ m_cost[s].load(std::memory_order_relaxed), m_points.input_position[s] }; }
+  Key key(Index s) const
+  {
+    return Key{ m_cost[s].load(std::memory_order_relaxed), scrambled(m_points.input_position[s]) };
+  }
 
   // The relocation that follows a run needs none of its memory, and a run
   // that follows it starts from the present points alone.
@@ -174,11 +196,9 @@ private:
   void follow_present()
   {
     const std::size_t n = m_points.size();
-    if (m_weight.empty())
-    {
-      m_weight = coverage_weights(m_field);
-      m_unit = share_unit(m_field, n);
-    }
+    m_weight = coverage_weights(m_field);
+    m_unit = share_unit(m_field, n);
+    m_largest_share = largest_share(n);
     m_nearest.assign(n, none_index);
     m_next.assign(n, none_index);
     m_share.assign(n, 0);
@@ -186,7 +206,10 @@ private:
     list_present();
     build_tree<ConcurrencyTag>();
     for_each_index<ConcurrencyTag>(
-      n, [&](std::size_t i) { attach(Index(i), is_present(Index(i)) ? Index(i) : m_tree->nearest_one(Index(i))); },
+      n,
+      [&](std::size_t i) {
+        follow_nearest_and_next(Index(i), is_present(Index(i)) ? Index(i) : m_tree->nearest_one(Index(i)));
+      },
       [](std::size_t) { return true; });
   }
 
@@ -208,7 +231,7 @@ private:
   // Sets `i`'s nearest present point to `nearest` and finds its next one,
   // then adds its share to the cost of the nearest. When `i` is present, its
   // nearest point is itself.
-  void attach(Index i, Index nearest)
+  void follow_nearest_and_next(Index i, Index nearest)
   {
     Index next = none_index;
     double to_nearest = 0., to_next = 0.;
@@ -222,7 +245,7 @@ private:
     }
     m_nearest[i] = nearest;
     m_next[i] = next;
-    m_share[i] = next == none_index ? 0 : removal_share(m_weight[i], to_nearest, to_next, m_unit);
+    m_share[i] = next == none_index ? 0 : removal_share(m_weight[i], to_nearest, to_next, m_unit, m_largest_share);
     m_cost[nearest].fetch_add(m_share[i], std::memory_order_relaxed);
   }
 
@@ -231,7 +254,7 @@ private:
   Array<Index> remove_round(std::size_t target)
   {
     const Array<Index> round = removable_in_round<ConcurrencyTag>(m_count - target);
-    remove<ConcurrencyTag>(round);
+    remove_points<ConcurrencyTag>(round);
     return round;
   }
 
@@ -300,7 +323,7 @@ private:
   // point that loses its nearest keeps its next, now its nearest, as no
   // round removes both.
   template <typename ConcurrencyTag>
-  void remove(const Array<Index>& round)
+  void remove_points(const Array<Index>& round)
   {
     for (Index p : round)
     {
@@ -318,7 +341,7 @@ private:
         if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
           return;
         m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
-        attach(Index(i), is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
+        follow_nearest_and_next(Index(i), is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
       },
       [](std::size_t) { return true; });
   }
@@ -335,13 +358,15 @@ private:
   // a tree of the present points, from which the removed ones are left out
   // until it holds twice as many as are present, when it is built again
   std::optional<Point_tree> m_tree;
+  // the points the tree was built with, removed ones included
+  std::size_t m_tree_size = 0;
   // whether a ranking's level boundaries are relocated, and their cells
   // while it runs
   bool m_relocates_levels = false;
   std::optional<Level_cells> m_level_cells;
-  std::size_t m_tree_size = 0;
   Array<double> m_weight;
   double m_unit = 1.;
+  std::int64_t m_largest_share = 0;
   Array<Index> m_nearest, m_next;
   Array<std::int64_t> m_share;
   Array<std::atomic<std::int64_t> > m_cost;

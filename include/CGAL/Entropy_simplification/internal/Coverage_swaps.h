@@ -67,9 +67,6 @@ inline double crowding(double squared_distance, double scale) { return squared_d
 // point it moves; a refill, when they run out, costs a pass over the points.
 inline std::size_t heap_size(std::size_t swaps) { return 4 * swaps + 64; }
 
-// No point: the site of a point that has no present point.
-constexpr Index none_index = Index(-1);
-
 // The nearest present point of a point that has none, at an infinite distance.
 inline Neighbor no_neighbor() { return Neighbor{ std::numeric_limits<double>::infinity(), none_index, none_index }; }
 

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Entropy_simplification authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The terms the default mode adds to weighted sample elimination, each of
-// which can be switched off to measure what it contributes.
+// The terms the default mode is made of, each of which can be switched off
+// to measure what it contributes.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_TERMS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_TERMS_H
@@ -13,10 +13,11 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
-// What the default mode is made of, besides the entropy term itself (Options::feature_weight, 0 to switch it
-// off). Every public function runs with all of them; the benchmark's ablation
-// (benchmark/bench_ablation.cpp) switches each off in turn, and the tests
-// check each switch against the independent reference.
+// What the default mode is made of, besides the entropy term itself
+// (Options::feature_weight, 0 to switch it off). Every public function runs
+// with all of them; the benchmark's ablation (benchmark/bench_ablation.cpp)
+// switches each off in turn, and the tests check each switch against the
+// independent reference.
 struct Default_mode_terms
 {
   // the elimination is the greedy coverage elimination (see
@@ -41,8 +42,9 @@ struct Default_mode_terms
   // nearest the centroids (see greatest_squared_radius_about_centroids)
   bool radius_bound = true;
   // the relocated points end with a few swaps of the points farthest from
-  // them for the most crowded of them (see swap_farthest_for_crowded); a
-  // ranking's level boundaries are swapped either way (see swap_among_neighbors)
+  // them for the most crowded of them (see swap_farthest_for_crowded); with
+  // weighted sample elimination, a ranking's level boundaries are swapped
+  // either way (see swap_among_neighbors)
   bool coverage_swaps = true;
 };
 
@@ -53,8 +55,8 @@ struct Term_switched_off
   Default_mode_terms terms;
 };
 
-// Each term switched off in turn, in the order of Default_mode_terms: what
-// the ablation runs.
+// Each term switched off in turn, the elimination last: what the ablation
+// runs.
 inline std::vector<Term_switched_off> each_term_switched_off()
 {
   std::vector<Term_switched_off> each;

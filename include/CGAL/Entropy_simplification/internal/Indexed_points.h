@@ -32,6 +32,8 @@ namespace Entropy_simplification {
 namespace internal {
 
 using Index = std::uint32_t;
+// No point: the site of a point that has no present point, for example.
+constexpr Index none_index = Index(-1);
 using Working_kernel = CGAL::Simple_cartesian<double>;
 using Working_point = Working_kernel::Point_3;
 
