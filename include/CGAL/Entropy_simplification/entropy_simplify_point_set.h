@@ -101,16 +101,17 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    their nearest kept point that a removal alone would cause. Each round
    removes every kept point whose cost is below that of each kept point it
    shares an input point with (as nearest and next), among the tenth of
-   least cost (ties: the lowest input position), until the target. An input
-   point weighs `(1 + w s)^(3/2)`, `s` its feature strength and `w`
-   `Options::feature_weight`, so that features keep up to `1 + w` times the
-   density of flat regions; the feature strength is the variation of the
+   least cost (ties: the lowest scrambled input position), until the
+   target. An input point weighs `(1 + w s)^(3/2)`, `s` its feature strength
+   and `w` `Options::feature_weight`, lowered where features cover much of
+   the area, so that features keep up to `1 + w` times the density of flat
+   regions; the feature strength is the variation of the
    normals of `p` and `N(p)`, the entropy of the eigenvalues of their
    orientation tensor, independent of their orientation and of any
    reference plane, measured against the cloud's own noise (its median), at
-   the scale of `k` and at a coarser scale. Where the input is sparse, the
-   kept density follows the input's to the power 2/3, the density that
-   minimises such a sum. Two iterations of a relaxation restricted to the
+   the scale of `k` and at a coarser scale. Where the input's density
+   varies, the kept density follows it to about the power 2/3, the density
+   that minimises such a sum. Two iterations of a relaxation restricted to the
    input points end it: each kept point gives way to the median of its
    Voronoi cell among the input points, the member whose distances to the
    others sum least among the four nearest the cell's centroid, unless that
@@ -212,9 +213,9 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
                        the points still present are kept (everything is kept when it
                        stops during the initial estimation). In `Mode::paper`, that is
                        exactly what a call asking for that number of points gives. In
-                       the default mode, whose stages and radius depend on the target,
-                       it is the state of the elimination at that moment, without the
-                       final relocation and coverage swaps.}
+                       the default mode, whose relocation depends on the target, it is
+                       the state of the elimination at that moment, without the final
+                       relocation and coverage swaps.}
      \cgalParamNEnd
 
      \cgalParamNBegin{geom_traits}
