@@ -66,16 +66,26 @@ struct Merits
   double squared_radius;
 };
 
-inline Merits merits_of(const Indexed_points& points, const Index* first, const Index* beyond, Neighbor member)
+// The merits of `member`, at `at`, among the `count` members whose j-th is
+// at `member_point(j)`.
+template <typename MemberPoint>
+Merits merits_of(std::size_t count, const MemberPoint& member_point, const Working_point& at, Neighbor member)
 {
   Merits r{ member, 0., 0. };
-  for (const Index* i = first; i != beyond; ++i)
+  for (std::size_t j = 0; j < count; ++j)
   {
-    const double d2 = squared_distance(points.points[*i], points.points[member.id]);
+    const double d2 = squared_distance(member_point(j), at);
     r.distance_sum += std::sqrt(d2);
     r.squared_radius = (std::max)(r.squared_radius, d2);
   }
   return r;
+}
+
+inline Merits merits_of(const Indexed_points& points, const Index* first, const Index* beyond, Neighbor member)
+{
+  return merits_of(
+    std::size_t(beyond - first), [&](std::size_t j) -> const Working_point& { return points.points[first[j]]; },
+    points.points[member.id], member);
 }
 
 // Whether `a` is nearer than `b` to being the cell's median: a lesser

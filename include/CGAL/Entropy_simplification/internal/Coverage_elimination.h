@@ -206,9 +206,35 @@ private:
     list_present();
     build_tree<ConcurrencyTag>();
     for_each_index<ConcurrencyTag>(
-      n,
-      [&](std::size_t i) {
-        follow_nearest_and_next(Index(i), is_present(Index(i)) ? Index(i) : m_tree->nearest_one(Index(i)));
+      n, [&](std::size_t i) { follow_anew(Index(i)); }, [](std::size_t) { return true; });
+  }
+
+  // Follows the present points after a relocation brought back the points
+  // `arrived` in place of others: only the points whose nearest or next
+  // present point left, or to which an arriving point is nearer than their
+  // next, search anew. The others keep their nearest, next and share, as
+  // follow_present() would find them. An arriving point replaces its own
+  // nearest (its cell's site), so it searches anew too.
+  template <typename ConcurrencyTag>
+  void follow_relocated(const Array<Index>& arrived)
+  {
+    list_present();
+    build_tree<ConcurrencyTag>();
+    const Point_tree arrivals(m_points, arrived.begin(), arrived.end());
+    for_each_index<ConcurrencyTag>(
+      m_points.size(),
+      [&](std::size_t s) {
+        const Index i = Index(s);
+        const Index next = m_next[i];
+        CGAL_assertion(!is_present(i) || m_nearest[i] == i || !is_present(m_nearest[i]));
+        const bool still_followed =
+          is_present(m_nearest[i]) && next != none_index && is_present(next) &&
+          !arrivals.holds_nearer(i, Neighbor{ squared_distance(m_points.points[i], m_points.points[next]),
+                                              m_points.input_position[next], next });
+        if (still_followed)
+          return;
+        m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
+        follow_anew(i);
       },
       [](std::size_t) { return true; });
   }
@@ -228,25 +254,43 @@ private:
     m_tree_size = m_listed.size();
   }
 
-  // Sets `i`'s nearest present point to `nearest` and finds its next one,
-  // then adds its share to the cost of the nearest. When `i` is present, its
-  // nearest point is itself.
-  void follow_nearest_and_next(Index i, Index nearest)
+  // Sets `i`'s nearest present point to `nearest` (itself when present)
+  // and its next to `next`, none_index when the nearest is alone, then adds
+  // its share to the cost of the nearest.
+  void follow(Index i, Index nearest, const Neighbor& next)
   {
-    Index next = none_index;
-    double to_nearest = 0., to_next = 0.;
-    if (m_count > 1)
-    {
-      const Neighbor found = m_tree->nearest_one_besides(i, nearest);
-      next = found.id;
-      to_next = std::sqrt(found.squared_distance);
-      if (nearest != i)
-        to_nearest = std::sqrt(squared_distance(m_points.points[i], m_points.points[nearest]));
-    }
     m_nearest[i] = nearest;
-    m_next[i] = next;
-    m_share[i] = next == none_index ? 0 : removal_share(m_weight[i], to_nearest, to_next, m_unit, m_largest_share);
+    m_next[i] = next.id;
+    m_share[i] = 0;
+    if (next.id != none_index)
+    {
+      const double to_nearest =
+        nearest == i ? 0. : std::sqrt(squared_distance(m_points.points[i], m_points.points[nearest]));
+      m_share[i] =
+        removal_share(m_weight[i], to_nearest, std::sqrt(next.squared_distance), m_unit, m_largest_share);
+    }
     m_cost[nearest].fetch_add(m_share[i], std::memory_order_relaxed);
+  }
+
+  // Follows `nearest`, and the first present point after it, as `i`'s
+  // nearest and next.
+  void follow_after(Index i, Index nearest)
+  {
+    follow(i, nearest,
+           m_count > 1 ? m_tree->nearest_one_besides(i, nearest) : Neighbor{ 0., 0, none_index });
+  }
+
+  // Follows `i`'s nearest and next present points, searched anew among at
+  // least two.
+  void follow_anew(Index i)
+  {
+    if (is_present(i))
+      follow_after(i, i);
+    else
+    {
+      const auto [nearest, next] = m_tree->nearest_two(i);
+      follow(i, nearest.id, next);
+    }
   }
 
   // One round, down to `target` at most: its removals, by cost.
@@ -261,8 +305,8 @@ private:
   // Rounds down to the level `boundary`, which is relocated unless it is
   // the `target`: the removals, each point that the relocation brings back
   // replaced by the point it replaces. The removed points join the cells of
-  // their nearest present points, whose medians move in, and every input
-  // point then follows the relocated points.
+  // their nearest present points, whose medians move in, and the input
+  // points then follow the relocated points (see follow_relocated).
   template <typename ConcurrencyTag>
   Array<Index> remove_level(std::size_t boundary, std::size_t target)
   {
@@ -276,31 +320,43 @@ private:
       return removals;
     for (Index r : removals)
       m_level_cells->join(r, m_nearest[r]);
-    m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, removals);
-    follow_present<ConcurrencyTag>();
+    follow_relocated<ConcurrencyTag>(
+      m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, removals));
     return removals;
   }
 
   // The points the next round removes, by cost: those of the first tenth of
   // the present points that come before every present point they share an
-  // input point with, at most `removals`.
+  // input point with, at most `removals`. Only the pairs with a point of
+  // that tenth compare keys.
   template <typename ConcurrencyTag>
   Array<Index> removable_in_round(std::size_t removals) const
   {
-    Array<std::atomic<char> > blocked(m_points.size());
+    const Key threshold = key_of_present((std::max)(std::size_t(1), m_count / 10));
+    enum : char { beyond_threshold, removable, blocked };
+    Array<std::atomic<char> > state(m_points.size()); // zero: beyond_threshold
+    for_each_index<ConcurrencyTag>(
+      m_listed.size(),
+      [&](std::size_t r) {
+        if (!(threshold < key(m_listed[r])))
+          state[m_listed[r]].store(removable, std::memory_order_relaxed);
+      },
+      [](std::size_t) { return true; });
     for_each_index<ConcurrencyTag>(
       m_points.size(),
       [&](std::size_t i) {
-        if (m_next[i] == none_index)
+        const Index a = m_nearest[i], b = m_next[i];
+        if (b == none_index || (state[a].load(std::memory_order_relaxed) == beyond_threshold &&
+                                state[b].load(std::memory_order_relaxed) == beyond_threshold))
           return;
-        const bool nearest_first = key(m_nearest[i]) < key(m_next[i]);
-        blocked[nearest_first ? m_next[i] : m_nearest[i]].store(1, std::memory_order_relaxed);
+        const Index later = key(a) < key(b) ? b : a;
+        if (state[later].load(std::memory_order_relaxed) != beyond_threshold)
+          state[later].store(blocked, std::memory_order_relaxed);
       },
       [](std::size_t) { return true; });
-    const Key threshold = key_of_present((std::max)(std::size_t(1), m_count / 10));
     Array<Index> round;
     for (Index s : m_listed)
-      if (!blocked[s].load(std::memory_order_relaxed) && !(threshold < key(s)))
+      if (state[s].load(std::memory_order_relaxed) == removable)
         round.push_back(s);
     std::sort(round.begin(), round.end(), [this](Index a, Index b) { return key(a) < key(b); });
     round.resize((std::min)(round.size(), removals));
@@ -341,7 +397,7 @@ private:
         if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
           return;
         m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
-        follow_nearest_and_next(Index(i), is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
+        follow_after(Index(i), is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
       },
       [](std::size_t) { return true; });
   }

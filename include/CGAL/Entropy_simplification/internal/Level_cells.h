@@ -159,9 +159,23 @@ private:
     const std::size_t count = std::size_t(candidates.end(c) - candidate);
     if (count == 1) // the site alone: no point that the stage removed joined its cell
       return candidate[0];
+    // The members, scattered in memory, are read once, and each candidate
+    // sums over their copies: at the coarsest levels of a ranking, where a
+    // few cells hold every point, this took the medians of a ranking of
+    // 300,000 points from 0.36 s to 0.07 s (with a level at 1%). A cell run
+    // on its own thread reuses that thread's copy; one whose candidates run
+    // in parallel has its own, as its thread may take on another cell while
+    // it waits for them.
+    thread_local Array<Working_point> reused;
+    Array<Working_point> own;
+    Array<Working_point>& member_points = in_parallel ? own : reused;
+    member_points.clear();
+    for (const Index* i = members.begin(c); i != members.end(c); ++i)
+      member_points.push_back(points.points[*i]);
     const auto merits = [&](std::size_t k) {
-      return merits_of(points, members.begin(c), members.end(c),
-                       Neighbor{ 0., points.input_position[candidate[k]], candidate[k] });
+      return merits_of(
+        member_points.size(), [&](std::size_t j) -> const Working_point& { return member_points[j]; },
+        points.points[candidate[k]], Neighbor{ 0., points.input_position[candidate[k]], candidate[k] });
     };
     if (!in_parallel)
       return nearest_median(count, merits);

@@ -114,6 +114,28 @@ public:
     return one.best;
   }
 
+  // The first two points of the tree other than `q` in the neighbour order
+  // of `q`, as `nearest(q, 2, ...)` finds them, with no list to keep. The
+  // tree must hold two points other than `q`.
+  std::pair<Neighbor, Neighbor> nearest_two(Index q) const
+  {
+    Best_two two;
+    search_nearest(q, two);
+    return { two.first, two.second };
+  }
+
+  // Whether the tree holds a point other than `q` that comes before `than`
+  // in the neighbour order of `q`. The search starts bounded by `than`, so
+  // that it visits only the leaves near `q`.
+  bool holds_nearer(Index q, const Neighbor& than) const
+  {
+    Best_one one;
+    one.best = than;
+    if (!m_order.empty())
+      search_nearest(q, one);
+    return one.best < than;
+  }
+
   // Records the largest of `scales` in each node, for `within_reach_of_leaf`.
   // Children follow their parent in m_nodes: a backward pass sees them first.
   void record_largest_scales(const Array<double>& scales)
@@ -285,6 +307,23 @@ private:
     {
       if (candidate < best && candidate.id != besides)
         best = candidate;
+    }
+  };
+
+  struct Best_two
+  {
+    Neighbor first{ std::numeric_limits<double>::infinity(), 0, 0 };
+    Neighbor second = first;
+    double bound() const { return second.squared_distance; }
+    void offer(const Neighbor& candidate)
+    {
+      if (candidate < first)
+      {
+        second = first;
+        first = candidate;
+      }
+      else if (candidate < second)
+        second = candidate;
     }
   };
 
