@@ -1,6 +1,7 @@
 // The package's tree against a linear scan: the k nearest neighbours in
 // the package's order (squared distance, then input position), the points
-// within a reach that depends on both points' scales, and removals. The
+// within a reach that depends on both points' scales, removals, and the
+// coverage elimination's searches (two nearest, whether one is nearer). The
 // clouds hold thousands of points, so that the tree has many levels, and
 // points on an integer lattice, so that many distances tie. And the kd
 // order the tree follows against the independent reference's.
@@ -15,6 +16,7 @@
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
 #include <algorithm>
+#include <numeric>
 #include <tuple>
 #include <vector>
 
@@ -66,6 +68,47 @@ ESI::Array<ESI::Index> ids(const ESI::Array<ESI::Neighbor>& best)
   return result;
 }
 
+// Whether some point of `candidates` other than q comes before `than` in
+// the neighbour order of q, by comparing them all with it.
+bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates, ESI::Index q,
+                       const ESI::Neighbor& than)
+{
+  return std::any_of(candidates.begin(), candidates.end(), [&](ESI::Index i) {
+    const double d = ESI::squared_distance(p.points[q], p.points[i]);
+    return i != q && (d < than.squared_distance ||
+                      (d == than.squared_distance && p.input_position[i] < than.input_position));
+  });
+}
+
+// The searches of the coverage elimination against the scans, `members`
+// being the tree's points that are not removed: the two nearest points, the
+// nearest besides the nearest, and whether a point comes before another,
+// that other being one of the four points of the cloud nearest the query
+// (on the lattice, many tie with the tree's points by distance, and only
+// the input position decides) or a point anywhere.
+void require_two_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Point_tree& tree,
+                                    const ESI::Array<ESI::Index>& members)
+{
+  ESI::Array<ESI::Index> everyone(p.size());
+  std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
+  {
+    const ESI::Array<ESI::Index> first_two = scan_nearest(p, members, q, 2);
+    const auto [nearest, next] = tree.nearest_two(q);
+    REQUIRE(ESI::Array<ESI::Index>{ nearest.id, next.id } == first_two);
+    REQUIRE(nearest.squared_distance == ESI::squared_distance(p.points[q], p.points[first_two[0]]));
+    REQUIRE(tree.nearest_one_besides(q, first_two[0]).id == first_two[1]);
+    ESI::Array<ESI::Index> others = scan_nearest(p, everyone, q, 4);
+    others.push_back(ESI::Index((q * 7919u) % p.size()));
+    for (ESI::Index other : others)
+    {
+      const ESI::Neighbor than{ ESI::squared_distance(p.points[q], p.points[other]), p.input_position[other],
+                                other };
+      REQUIRE(tree.holds_nearer(q, than) == scan_holds_nearer(p, members, q, than));
+    }
+  }
+}
+
 } // namespace
 
 TEST_CASE("Point tree: nearest neighbours in the package's order, before and after removals, one or many", "[point tree]")
@@ -87,6 +130,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
   // lattice repeats positions
   for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, members, q, 1).front());
+  require_two_nearest_and_nearer(p, tree, members);
   // remove all but 30 members: the searches skip the removed points
   ESI::Portable_random random(5);
   ESI::Array<ESI::Index> present = members;
@@ -104,6 +148,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     REQUIRE(ids(best) == scan_nearest(p, present, q, 100));
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, present, q, 1).front());
   }
+  require_two_nearest_and_nearer(p, tree, present);
 }
 
 TEST_CASE("Point tree: any indices, in any order, on points in any order", "[point tree]")
