@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_engine.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
@@ -85,28 +86,14 @@ inline std::int64_t removal_share(double weight, double to_nearest, double to_ne
 // present points that come first: none of them is the nearest and next of
 // one point, so each point loses at most one of the two. The round's
 // removals, in that order, are the order of removal.
-class Coverage_elimination
+class Coverage_elimination : public Default_mode_engine
 {
 public:
   Coverage_elimination(const Indexed_points& points, unsigned int k, const Options& options,
                        const Default_mode_terms& terms = Default_mode_terms())
-    : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
-      m_count(points.size())
+    : Default_mode_engine(points, k, options, terms)
   {}
 
-  // Computes the field from the k nearest neighbours of every point.
-  // `progress` receives the fraction done, on the calling thread;
-  // returns false when it asked to stop.
-  template <typename ConcurrencyTag, typename Progress>
-  bool initialize(const Progress& progress)
-  {
-    Array<Index> knn;
-    return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) &&
-           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
-                                                     [&](double f) { return progress(0.5 + 0.5 * f); });
-  }
-
-  bool is_present(Index i) const { return m_present[i] != 0; }
   // Makes the points of `present` the present ones, which the next
   // remove_down_to() follows from the start.
   void set_present(Array<char> present)
@@ -114,13 +101,6 @@ public:
     m_present = std::move(present);
     m_count = std::size_t(std::count(m_present.begin(), m_present.end(), char(1)));
   }
-  // The normals of the points `subset`, as the field estimated them.
-  template <typename ConcurrencyTag>
-  Array<Working_vector> normals_of(const Array<Index>& subset) const
-  {
-    return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
-  }
-  const Elimination_field& field() const { return m_field; }
 
   // Makes the next remove_down_to() end its rounds at the level boundaries
   // (see level_boundary_below) and relocate each of them (see Level_cells),
@@ -402,13 +382,6 @@ private:
       [](std::size_t) { return true; });
   }
 
-  const Indexed_points& m_points;
-  const unsigned int m_k;
-  const Options m_options;
-  const Default_mode_terms m_terms;
-  Elimination_field m_field;
-  Array<char> m_present;
-  std::size_t m_count;
   // the present points in index order
   Array<Index> m_listed;
   // a tree of the present points, from which the removed ones are left out

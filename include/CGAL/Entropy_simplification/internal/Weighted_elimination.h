@@ -10,6 +10,7 @@
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_engine.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
@@ -110,7 +111,7 @@ inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, 
 // the others within its reach, sums their weights into the point's weight,
 // and removes the point of greatest weight (ties: lowest input position),
 // subtracting its weight from its neighbours', until the stage's target.
-class Weighted_elimination
+class Weighted_elimination : public Default_mode_engine
 {
 public:
   // A block of `leaves_per_block` leaves of the tree is gathered at a time
@@ -119,32 +120,21 @@ public:
   Weighted_elimination(const Indexed_points& points, unsigned int k, const Options& options,
                        const Default_mode_terms& terms = Default_mode_terms(),
                        std::size_t leaves_per_block = std::size_t(1) << 11)
-    : m_points(points),
-      m_k(k),
-      m_options(options),
-      m_terms(terms),
-      m_leaves_per_block((std::max)(std::size_t(1), leaves_per_block)),
-      m_present(points.size(), 1),
-      m_count(points.size())
+    : Default_mode_engine(points, k, options, terms),
+      m_leaves_per_block((std::max)(std::size_t(1), leaves_per_block))
   {}
 
-  // Computes the field from the k nearest neighbours of every point.
-  // `progress` receives the fraction done, on the calling thread; returns
-  // false when it asked to stop.
+  // Computes the field (see Default_mode_engine), then lists the points.
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
-    Array<Index> knn;
-    if (!nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) ||
-        !compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
-                                                   [&](double f) { return progress(0.5 + 0.5 * f); }))
+    if (!Default_mode_engine::initialize<ConcurrencyTag>(progress))
       return false;
     // listed once the field's memory is released
     m_listed = all_indices(m_points.size());
     return true;
   }
 
-  bool is_present(Index i) const { return m_present[i] != 0; }
   // Makes the points of `present` the present ones, as many as before (the
   // relocation exchanges points).
   void set_present(Array<char> present)
@@ -153,13 +143,6 @@ public:
     m_listed = all_indices(m_points.size());
     list_present();
   }
-  // The normals of the points `subset`, as the field estimated them.
-  template <typename ConcurrencyTag>
-  Array<Working_vector> normals_of(const Array<Index>& subset) const
-  {
-    return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
-  }
-  const Elimination_field& field() const { return m_field; }
 
   // Makes the next remove_down_to() end its stages at the level boundaries
   // (see level_boundary_below) and relocate each of them (see Level_cells),
@@ -587,15 +570,8 @@ private:
     return pair_weight(m_points.points[a], m_points.points[b], m_field.scale[a], m_field.scale[b], stage);
   }
 
-  const Indexed_points& m_points;
-  const unsigned int m_k;
-  const Options m_options;
-  const Default_mode_terms m_terms;
   // leaves gathered in parallel before their lists are appended
   const std::size_t m_leaves_per_block;
-  Elimination_field m_field;
-  Array<char> m_present;
-  std::size_t m_count;
   // the present points in index order, listed after the initialisation, so
   // that choosing each round's candidates reads only them; the points
   // removed since are dropped between rounds

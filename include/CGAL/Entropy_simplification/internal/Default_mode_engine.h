@@ -1,0 +1,69 @@
+// Copyright (c) 2026 The Entropy_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the default mode's two eliminations share: the points, the field
+// computed from their neighbours, and which of them are present.
+
+#ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_ENGINE_H
+#define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_ENGINE_H
+
+#include <CGAL/Entropy_simplification/Options.h>
+#include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
+#include <CGAL/Entropy_simplification/internal/Elimination_field.h>
+#include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+
+#include <cstddef>
+#include <utility>
+
+namespace CGAL {
+namespace Entropy_simplification {
+namespace internal {
+
+// The base of Coverage_elimination and Weighted_elimination, every point
+// present at first.
+class Default_mode_engine
+{
+public:
+  Default_mode_engine(const Indexed_points& points, unsigned int k, const Options& options,
+                      const Default_mode_terms& terms)
+    : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
+      m_count(points.size())
+  {}
+
+  // Computes the field from the k nearest neighbours of every point.
+  // `progress` receives the fraction done, on the calling thread; returns
+  // false when it asked to stop.
+  template <typename ConcurrencyTag, typename Progress>
+  bool initialize(const Progress& progress)
+  {
+    Array<Index> knn;
+    return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) &&
+           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
+                                                     [&](double f) { return progress(0.5 + 0.5 * f); });
+  }
+
+  bool is_present(Index i) const { return m_present[i] != 0; }
+  // The normals of the points `subset`, as the field estimated them.
+  template <typename ConcurrencyTag>
+  Array<Working_vector> normals_of(const Array<Index>& subset) const
+  {
+    return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
+  }
+  const Elimination_field& field() const { return m_field; }
+
+protected:
+  const Indexed_points& m_points;
+  const unsigned int m_k;
+  const Options m_options;
+  const Default_mode_terms m_terms;
+  Elimination_field m_field;
+  Array<char> m_present;
+  std::size_t m_count;
+};
+
+} // namespace internal
+} // namespace Entropy_simplification
+} // namespace CGAL
+
+#endif // CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DEFAULT_MODE_ENGINE_H
