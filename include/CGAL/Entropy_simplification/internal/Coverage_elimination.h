@@ -264,6 +264,7 @@ private:
   // least two.
   void follow_anew(Index i)
   {
+    CGAL_precondition(m_count >= 2);
     if (is_present(i))
       follow_after(i, i);
     else

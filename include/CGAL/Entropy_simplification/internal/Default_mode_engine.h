@@ -25,12 +25,6 @@ namespace internal {
 class Default_mode_engine
 {
 public:
-  Default_mode_engine(const Indexed_points& points, unsigned int k, const Options& options,
-                      const Default_mode_terms& terms)
-    : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
-      m_count(points.size())
-  {}
-
   // Computes the field from the k nearest neighbours of every point.
   // `progress` receives the fraction done, on the calling thread; returns
   // false when it asked to stop.
@@ -53,6 +47,12 @@ public:
   const Elimination_field& field() const { return m_field; }
 
 protected:
+  Default_mode_engine(const Indexed_points& points, unsigned int k, const Options& options,
+                      const Default_mode_terms& terms)
+    : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
+      m_count(points.size())
+  {}
+
   const Indexed_points& m_points;
   const unsigned int m_k;
   const Options m_options;
