@@ -542,7 +542,8 @@ inline std::vector<std::size_t> eliminate(const std::vector<Point>& points, cons
 // ----------------------------------------------------------------------------
 
 // The present points nearest `points[p]` and next, in the neighbour order,
-// `p` itself first when present, by a scan: (distance, input position).
+// `p` itself first when present, by a scan: (squared distance, input
+// position).
 inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const std::vector<Point>& points,
                                                                          const std::vector<bool>& present,
                                                                          std::size_t p)
@@ -556,12 +557,33 @@ inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const st
     all.insert(all.begin(), Neighbor{ 0., p });
   std::vector<std::pair<double, std::size_t> > two;
   for (std::size_t j = 0; j < (std::min)(std::size_t(2), all.size()); ++j)
-    two.emplace_back(std::sqrt(all[j].first), all[j].second);
+    two.push_back(all[j]);
   return two;
 }
 
+// The weight of each point in the greedy coverage elimination: (smallest
+// scale / its scale)^3.
+inline std::vector<double> coverage_weights(const Field& field)
+{
+  const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
+  std::vector<double> weight;
+  for (double s : field.scale)
+    weight.push_back(std::pow(smallest / s, 3.));
+  return weight;
+}
+
+// The points whose distances count in a greedy coverage elimination: every
+// point with its weight (empty), or the points of nonzero weight, each as
+// far from a point at distance d as sqrt(d^2 + spread^2).
+struct Followers
+{
+  std::vector<double> weight, spread;
+};
+
 // The removal order from the `present` points (all when empty) down to
-// `target`. Each point weighs (smallest scale / its scale)^3; what removing
+// `target`, the `followers` being the points whose distances count. By
+// default, every point counts and weighs (smallest scale / its scale)^3;
+// what removing
 // its nearest present point costs it is its weight times the distance to
 // its next one less the distance to the nearest, in units of 2^-20 of the
 // typical spacing (the side of the effective area over n, the clouds here
@@ -574,12 +596,14 @@ inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const st
 // least the first); the candidates are removed in that order, at most down
 // to `target`.
 inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& points, const Field& field,
-                                                   std::size_t target, std::vector<bool> present = {})
+                                                   std::size_t target, std::vector<bool> present = {},
+                                                   const Followers& followers = {})
 {
   const std::size_t n = points.size();
   if (present.empty())
     present.assign(n, true);
-  const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
+  const std::vector<double> weight = followers.weight.empty() ? coverage_weights(field) : followers.weight;
+  const std::vector<double> spread = followers.spread.empty() ? std::vector<double>(n, 0.) : followers.spread;
   const double unit = std::sqrt(field.effective_area / double(n)) / 1048576.;
   const std::int64_t largest =
     (std::min)(std::int64_t(1099511627776), std::numeric_limits<std::int64_t>::max() / std::int64_t(n));
@@ -591,9 +615,11 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
     std::vector<std::pair<std::size_t, std::size_t> > nearest_and_next;
     for (std::size_t p = 0; p < n; ++p)
     {
+      if (weight[p] == 0.)
+        continue;
       const auto two = nearest_two_present(points, present, p);
-      const double weight = std::pow(smallest / field.scale[p], 3.);
-      const double share = weight * (two[1].first - two[0].first) / unit;
+      const auto to = [&](double squared) { return std::sqrt(squared + spread[p] * spread[p]); };
+      const double share = weight[p] * (to(two[1].first) - to(two[0].first)) / unit;
       cost[two[0].second] += share < double(largest) ? std::int64_t(share) : largest;
       nearest_and_next.emplace_back(two[0].second, two[1].second);
     }
@@ -1017,23 +1043,48 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
 
 // The removal order of the `present` points down to one by the greedy
 // coverage elimination, in stages that end at the level boundaries, each
-// relocated, every present point adjacent to every removed one.
+// relocated, every present point adjacent to every removed one. Once at
+// most 1% of the points (rounded up) are present, at the start or after a
+// relocation, the present points alone count from then on, each weighing
+// the sum of the weights of the points nearest it, its spread their mean
+// distance to it, weighted, both summed in input order.
 inline std::vector<std::size_t> coverage_eliminate_by_boundaries(const std::vector<Point>& points,
                                                                  const Field& field, std::vector<bool> present)
 {
   const std::size_t n = points.size();
   std::vector<std::size_t> label = cells_of_present(points, present);
   std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
+  Followers followers; // every point with its own weight, until the switch
+  const auto represent_when_few = [&] {
+    if (!followers.weight.empty() || count > (n + 99) / 100)
+      return;
+    const std::vector<double> weight = coverage_weights(field);
+    followers.weight.assign(n, 0.);
+    followers.spread.assign(n, 0.);
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      const std::size_t r = nearest_present(points, present, p);
+      followers.weight[r] += weight[p];
+      followers.spread[r] += weight[p] * std::sqrt(squared_distance(points[p], points[r]));
+    }
+    for (std::size_t r = 0; r < n; ++r)
+      if (present[r])
+        followers.spread[r] /= followers.weight[r];
+  };
+  represent_when_few();
   std::vector<std::size_t> removed;
   while (count > 1)
   {
     const std::size_t end = stage_end(count, n);
-    std::vector<std::size_t> stage_removed = coverage_eliminate(points, field, end, present);
+    std::vector<std::size_t> stage_removed = coverage_eliminate(points, field, end, present, followers);
     for (std::size_t r : stage_removed)
       present[r] = false;
     count = end;
     if (end > 1)
+    {
       relocate_boundary(points, everywhere, present, label, stage_removed);
+      represent_when_few();
+    }
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());
   }
   return removed;

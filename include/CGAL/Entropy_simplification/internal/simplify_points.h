@@ -152,7 +152,9 @@ bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& poin
 // Orders the points a greedy coverage run kept, once relocated: the
 // elimination goes on among them down to one point, each input point
 // following its nearest and next kept points from the relocated ones, its
-// rounds ending at the level boundaries, each relocated (see Level_cells).
+// rounds ending at the level boundaries, each relocated (see Level_cells),
+// until at most 1% of the points are present, which then stand for the
+// input points (see Coverage_elimination).
 template <typename ConcurrencyTag>
 bool eliminate_the_kept(Coverage_elimination& engine, const Indexed_points& points, Engine_run& run,
                         Array<Index>, const std::function<bool(double)>& callback)
