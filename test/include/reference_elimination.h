@@ -583,12 +583,13 @@ struct Followers
 // The removal order from the `present` points (all when empty) down to
 // `target`, the `followers` being the points whose distances count. By
 // default, every point counts and weighs (smallest scale / its scale)^3;
-// what removing
-// its nearest present point costs it is its weight times the distance to
-// its next one less the distance to the nearest, in units of 2^-20 of the
-// typical spacing (the side of the effective area over n, the clouds here
-// having no coincident points), truncated, at most 2^40 and at most the
-// largest 64-bit integer over n. A present point's cost sums those of the
+// what removing its nearest present point costs it is its weight times the
+// distance to its next one less the distance to the nearest (each distance
+// d being sqrt(d^2 + spread^2) for a follower of some spread), in units of
+// 2^-20 of the typical spacing (the side of the effective area over n, the
+// clouds here having no coincident points), truncated, at most 2^40 and at
+// most the largest 64-bit integer over the number of points that count. A
+// present point's cost sums those of the
 // points it is nearest of. Each round, from the costs of its start: a
 // present point is a candidate when it comes (lowest cost, then lowest
 // scrambled input position) before every present point with which it is
@@ -604,9 +605,13 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
     present.assign(n, true);
   const std::vector<double> weight = followers.weight.empty() ? coverage_weights(field) : followers.weight;
   const std::vector<double> spread = followers.spread.empty() ? std::vector<double>(n, 0.) : followers.spread;
+  const auto counts = [&](std::size_t p) { return followers.weight.empty() || followers.weight[p] != 0.; };
+  std::int64_t counted = 0;
+  for (std::size_t p = 0; p < n; ++p)
+    counted += counts(p) ? 1 : 0;
   const double unit = std::sqrt(field.effective_area / double(n)) / 1048576.;
   const std::int64_t largest =
-    (std::min)(std::int64_t(1099511627776), std::numeric_limits<std::int64_t>::max() / std::int64_t(n));
+    (std::min)(std::int64_t(1099511627776), std::numeric_limits<std::int64_t>::max() / counted);
   std::size_t count = std::size_t(std::count(present.begin(), present.end(), true));
   std::vector<std::size_t> removed;
   while (count > target)
@@ -615,7 +620,7 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
     std::vector<std::pair<std::size_t, std::size_t> > nearest_and_next;
     for (std::size_t p = 0; p < n; ++p)
     {
-      if (weight[p] == 0.)
+      if (!counts(p))
         continue;
       const auto two = nearest_two_present(points, present, p);
       const auto to = [&](double squared) { return std::sqrt(squared + spread[p] * spread[p]); };

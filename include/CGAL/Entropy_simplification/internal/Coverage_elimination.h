@@ -70,7 +70,8 @@ inline std::int64_t largest_share(std::size_t n)
 // What removing point `a` costs point `i`, whose nearest present point it is
 // and whose next is at `to_next` from it: its weight times the distance it
 // then gains, in units of `unit`, truncated, at most `largest`. The distance
-// to `a` is 0 when `i` is `a`.
+// to `a` is 0 when `i` is `a`, unless `i` stands for input points spread
+// around it (see follow_representatives_when_few).
 inline std::int64_t removal_share(double weight, double to_nearest, double to_next, double unit,
                                   std::int64_t largest)
 {
@@ -206,23 +207,24 @@ private:
       [](std::size_t) { return true; });
   }
 
-  // Once a ranking's relocated stage leaves at most 1% of the points (the
-  // level boundary of 1%), each present point stands for the input points
-  // nearest it, its weight the sum of theirs, and its spread their mean
-  // distance to it, weighted (both summed in input order), and the present
-  // points alone follow the present points from then on. A representative
-  // is as far from a point at distance d as sqrt(d^2 + spread^2), and as
-  // far from itself as its spread, as its input points are on average: the
-  // removal of its nearest costs it less than its weight times the
-  // distance to its next, which a stage just below 1%, where the present
-  // points are hardly farther apart than the representatives, would
-  // otherwise overestimate. Every
-  // later present point is one of them, and the stages below cost little
-  // beside a direct call: with every input point following, each halving
+  // Once a ranking has at most 1% of the points present (from the start,
+  // or after the relocation of the boundary of 1%), each present point
+  // stands for the input points nearest it, and these representatives
+  // alone follow the present points from then on: every later present
+  // point is one of them. With every input point following, each halving
   // of the present points searched the nearest and next of about every
   // input point twice, and the stages below 1% cost about a third of a
-  // direct call to 1%. The cells of the level boundaries keep every input
-  // point, so that their medians stay those of the input points.
+  // direct call to 1%. A representative weighs as much as its input points
+  // together, and its spread is their mean distance to it (weighted, both
+  // summed in input order): it is as far from a point at distance d as
+  // sqrt(d^2 + spread^2), and from itself as its spread, so that the
+  // removal of its own point does not cost it its whole weight times the
+  // distance to its next, which a stage just below 1%, where the present
+  // points are hardly farther apart than the representatives, would
+  // overestimate. The cells of the level boundaries keep every input
+  // point, so that their medians stay those of the input points, and the
+  // shares are bounded by the representatives' count, as only they add to
+  // the costs.
   template <typename ConcurrencyTag>
   void follow_representatives_when_few()
   {
@@ -242,6 +244,7 @@ private:
       m_spread[r] /= weight[r];
     m_weight.swap(weight);
     m_followers = m_listed;
+    m_largest_share = largest_share(m_followers.size());
     for (Index i = 0; i < Index(m_points.size()); ++i)
       m_cost[i].store(0, std::memory_order_relaxed);
     for_each_follower<ConcurrencyTag>([&](Index r) { follow_after(r, r); });
@@ -260,16 +263,16 @@ private:
     build_tree<ConcurrencyTag>();
     const Point_tree arrivals(m_points, arrived.begin(), arrived.end());
     for_each_follower<ConcurrencyTag>([&](Index i) {
-        const Index next = m_next[i];
-        CGAL_assertion(!is_present(i) || m_nearest[i] == i || !is_present(m_nearest[i]));
-        const bool still_followed =
-          is_present(m_nearest[i]) && next != none_index && is_present(next) &&
-          !arrivals.holds_nearer(i, Neighbor{ squared_distance(m_points.points[i], m_points.points[next]),
-                                              m_points.input_position[next], next });
-        if (still_followed)
-          return;
-        m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
-        follow_anew(i);
+      const Index next = m_next[i];
+      CGAL_assertion(!is_present(i) || m_nearest[i] == i || !is_present(m_nearest[i]));
+      const bool still_followed =
+        is_present(m_nearest[i]) && next != none_index && is_present(next) &&
+        !arrivals.holds_nearer(i, Neighbor{ squared_distance(m_points.points[i], m_points.points[next]),
+                                            m_points.input_position[next], next });
+      if (still_followed)
+        return;
+      m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
+      follow_anew(i);
     });
   }
 
@@ -341,7 +344,8 @@ private:
   // the `target`: the removals, each point that the relocation brings back
   // replaced by the point it replaces. The removed points join the cells of
   // their nearest present points, whose medians move in, and the input
-  // points then follow the relocated points (see follow_relocated).
+  // points, or their representatives, then follow the relocated points
+  // (see follow_relocated and follow_representatives_when_few).
   template <typename ConcurrencyTag>
   Array<Index> remove_level(std::size_t boundary, std::size_t target)
   {
@@ -379,13 +383,13 @@ private:
       },
       [](std::size_t) { return true; });
     for_each_follower<ConcurrencyTag>([&](Index i) {
-        const Index a = m_nearest[i], b = m_next[i];
-        if (b == none_index || (state[a].load(std::memory_order_relaxed) == beyond_threshold &&
-                                state[b].load(std::memory_order_relaxed) == beyond_threshold))
-          return;
-        const Index later = key(a) < key(b) ? b : a;
-        if (state[later].load(std::memory_order_relaxed) != beyond_threshold)
-          state[later].store(blocked, std::memory_order_relaxed);
+      const Index a = m_nearest[i], b = m_next[i];
+      if (b == none_index || (state[a].load(std::memory_order_relaxed) == beyond_threshold &&
+                              state[b].load(std::memory_order_relaxed) == beyond_threshold))
+        return;
+      const Index later = key(a) < key(b) ? b : a;
+      if (state[later].load(std::memory_order_relaxed) != beyond_threshold)
+        state[later].store(blocked, std::memory_order_relaxed);
     });
     Array<Index> round;
     for (Index s : m_listed)
@@ -425,10 +429,10 @@ private:
     if (2 * m_count < m_tree_size)
       build_tree<ConcurrencyTag>();
     for_each_follower<ConcurrencyTag>([&](Index i) {
-        if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
-          return;
-        m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
-        follow_after(i, is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
+      if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
+        return;
+      m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
+      follow_after(i, is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
     });
   }
 
