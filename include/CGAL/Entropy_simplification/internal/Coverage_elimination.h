@@ -231,9 +231,10 @@ private:
     const std::size_t one_percent = (m_points.size() + 99) / 100;
     if (!m_followers.empty() || m_count > one_percent)
       return;
+    CGAL_precondition(m_level_cells.has_value()); // a ranking's, whose cells list the input order
     Array<double> weight(m_points.size(), 0.);
     m_spread.assign(m_points.size(), 0.);
-    for (Index i : indices_by_input_position(m_points))
+    for (Index i : m_level_cells->by_input())
     {
       weight[m_nearest[i]] += m_weight[i];
       if (m_nearest[i] != i)

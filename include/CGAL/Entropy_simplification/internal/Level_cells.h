@@ -64,6 +64,9 @@ public:
   {
   }
 
+  // The points in input order.
+  const Array<Index>& by_input() const { return m_by_input; }
+
   // Merges the cell of `removed` into that of `site`.
   void join(Index removed, Index site) { m_parent[cell_of(removed)] = cell_of(site); }
 
