@@ -247,6 +247,17 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
           CHECK(run.kept == target);
           CHECK(removals(run) == expected);
         }
+  // the fewest neighbours: below and at the three nearest that the
+  // elimination takes from the field's neighbour table rather than search
+  for (unsigned int k : { 2u, 3u })
+  {
+    INFO("k = " << k);
+    const std::vector<Point>& points = clouds[2].points;
+    const std::size_t target = points.size() / 10;
+    const std::vector<std::size_t> expected =
+      reference::removal_order(points, reference::feature_field(points, k, ES::Options()), target);
+    CHECK(removals(simplify(points, k, CGAL::parameters::number_of_output_points(target))) == expected);
+  }
 }
 
 namespace {

@@ -81,23 +81,27 @@ bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index
 }
 
 // The searches of the coverage elimination against the scans, `members`
-// being the tree's points that are not removed: the two nearest points, the
-// nearest besides the nearest, and whether a point comes before another,
-// that other being one of the four points of the cloud nearest the query
-// (on the lattice, many tie with the tree's points by distance, and only
-// the input position decides) or a point anywhere.
-void require_two_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Point_tree& tree,
+// being the tree's points that are not removed: the first one to four
+// points, and whether a point comes before another, that other being one
+// of the four points of the cloud nearest the query (on the lattice, many
+// tie with the tree's points by distance, and only the input position
+// decides) or a point anywhere.
+void require_few_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Point_tree& tree,
                                     const ESI::Array<ESI::Index>& members)
 {
   ESI::Array<ESI::Index> everyone(p.size());
   std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
   for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
   {
-    const ESI::Array<ESI::Index> first_two = scan_nearest(p, members, q, 2);
-    const auto [nearest, next] = tree.nearest_two(q);
-    REQUIRE(ESI::Array<ESI::Index>{ nearest.id, next.id } == first_two);
-    REQUIRE(nearest.squared_distance == ESI::squared_distance(p.points[q], p.points[first_two[0]]));
-    REQUIRE(tree.nearest_one_besides(q, first_two[0]).id == first_two[1]);
+    for (std::size_t count = 1; count <= 4; ++count)
+    {
+      const ESI::Array<ESI::Index> first = scan_nearest(p, members, q, count);
+      ESI::Neighbor found[4];
+      const std::size_t found_count = tree.nearest(q, count, found);
+      REQUIRE(ids(ESI::Array<ESI::Neighbor>(found, found + found_count)) == first);
+      for (std::size_t r = 0; r < found_count; ++r)
+        REQUIRE(found[r].squared_distance == ESI::squared_distance(p.points[q], p.points[first[r]]));
+    }
     ESI::Array<ESI::Index> others = scan_nearest(p, everyone, q, 4);
     others.push_back(ESI::Index((q * 7919u) % p.size()));
     for (ESI::Index other : others)
@@ -130,7 +134,7 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
   // lattice repeats positions
   for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, members, q, 1).front());
-  require_two_nearest_and_nearer(p, tree, members);
+  require_few_nearest_and_nearer(p, tree, members);
   // remove all but 30 members: the searches skip the removed points
   ESI::Portable_random random(5);
   ESI::Array<ESI::Index> present = members;
@@ -148,7 +152,17 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     REQUIRE(ids(best) == scan_nearest(p, present, q, 100));
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, present, q, 1).front());
   }
-  require_two_nearest_and_nearer(p, tree, present);
+  require_few_nearest_and_nearer(p, tree, present);
+  // fewer points than asked for: all those other than the query
+  const ESI::Array<ESI::Index> three(members.begin(), members.begin() + 3);
+  const ESI::Point_tree small(p, three.begin(), three.end());
+  for (ESI::Index q : { three[0], ESI::Index(1) })
+  {
+    ESI::Neighbor found[4];
+    const std::size_t count = small.nearest(q, 4, found);
+    REQUIRE(count == (q == three[0] ? 2u : 3u));
+    REQUIRE(ids(ESI::Array<ESI::Neighbor>(found, found + count)) == scan_nearest(p, three, q, 4));
+  }
 }
 
 TEST_CASE("Point tree: any indices, in any order, on points in any order", "[point tree]")

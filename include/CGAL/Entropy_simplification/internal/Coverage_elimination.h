@@ -94,7 +94,7 @@ class Coverage_elimination : public Default_mode_engine
 public:
   Coverage_elimination(const Indexed_points& points, unsigned int k, const Options& options,
                        const Default_mode_terms& terms = Default_mode_terms())
-    : Default_mode_engine(points, k, options, terms)
+    : Default_mode_engine(points, k, options, terms, following)
   {}
 
   // Makes the points of `present` the present ones, which the next
@@ -173,8 +173,7 @@ private:
     Array<Index>().swap(m_listed);
     Array<double>().swap(m_weight);
     Array<Index>().swap(m_nearest);
-    Array<Index>().swap(m_next);
-    Array<std::int64_t>().swap(m_share);
+    Array<Index>().swap(m_following);
     Array<std::atomic<std::int64_t> >().swap(m_cost);
   }
 
@@ -188,12 +187,25 @@ private:
     m_unit = share_unit(m_field, n);
     m_largest_share = largest_share(n);
     m_nearest.assign(n, none_index);
-    m_next.assign(n, none_index);
-    m_share.assign(n, 0);
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);
     list_present();
     build_tree<ConcurrencyTag>();
-    for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
+    if (m_count == n && m_first_neighbors.size() == n * following)
+    {
+      // each point is its own nearest, and its first neighbours follow it,
+      // as the search would find them
+      m_following = std::move(m_first_neighbors);
+      for_each_follower<ConcurrencyTag>([&](Index i) {
+        m_nearest[i] = i;
+        m_cost[i].fetch_add(share(i), std::memory_order_relaxed);
+      });
+    }
+    else
+    {
+      m_following.assign(n * following, none_index);
+      for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
+    }
+    Array<Index>().swap(m_first_neighbors);
   }
 
   // Calls `f(i)` for each point `i` that follows the present points: every
@@ -248,7 +260,7 @@ private:
     m_largest_share = largest_share(m_followers.size());
     for (Index i = 0; i < Index(m_points.size()); ++i)
       m_cost[i].store(0, std::memory_order_relaxed);
-    for_each_follower<ConcurrencyTag>([&](Index r) { follow_after(r, r); });
+    for_each_follower<ConcurrencyTag>([&](Index r) { follow_anew(r); });
   }
 
   // Follows the present points after a relocation brought back the points
@@ -264,15 +276,19 @@ private:
     build_tree<ConcurrencyTag>();
     const Point_tree arrivals(m_points, arrived.begin(), arrived.end());
     for_each_follower<ConcurrencyTag>([&](Index i) {
-      const Index next = m_next[i];
+      const Index next = next_of(i);
       CGAL_assertion(!is_present(i) || m_nearest[i] == i || !is_present(m_nearest[i]));
       const bool still_followed =
         is_present(m_nearest[i]) && next != none_index && is_present(next) &&
         !arrivals.holds_nearer(i, Neighbor{ squared_distance(m_points.points[i], m_points.points[next]),
                                             m_points.input_position[next], next });
       if (still_followed)
+      {
+        // an arriving point may come before a spare
+        std::fill_n(m_following.begin() + std::ptrdiff_t(i * following + 1), spares, none_index);
         return;
-      m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
+      }
+      unfollow(i);
       follow_anew(i);
     });
   }
@@ -292,44 +308,69 @@ private:
     m_tree_size = m_listed.size();
   }
 
-  // Sets `i`'s nearest present point to `nearest` (itself when present)
-  // and its next to `next`, none_index when the nearest is alone, then adds
-  // its share to the cost of the nearest.
-  void follow(Index i, Index nearest, const Neighbor& next)
+  // What `i` adds to the cost of its nearest present point: its share of
+  // that point's removal (see removal_share), from its nearest and next.
+  // It is computed again rather than kept, as the spares take its memory.
+  std::int64_t share(Index i) const
+  {
+    const Index nearest = m_nearest[i], next = next_of(i);
+    if (next == none_index)
+      return 0;
+    const double spread = m_spread.empty() ? 0. : m_spread[i];
+    const auto to = [&](Index p) {
+      return std::sqrt((p == i ? 0. : squared_distance(m_points.points[i], m_points.points[p])) + spread * spread);
+    };
+    return removal_share(m_weight[i], to(nearest), to(next), m_unit, m_largest_share);
+  }
+
+  // Takes `i`'s share out of the cost of its nearest, before it follows
+  // others.
+  void unfollow(Index i) { m_cost[m_nearest[i]].fetch_sub(share(i), std::memory_order_relaxed); }
+
+  // Sets `i`'s nearest present point to `nearest` (itself when present),
+  // and its next and spares to the `following` points of `listed`
+  // (none_index where there are none), then adds its share to the cost of
+  // the nearest.
+  void follow(Index i, Index nearest, const Index* listed)
   {
     m_nearest[i] = nearest;
-    m_next[i] = next.id;
-    m_share[i] = 0;
-    if (next.id != none_index)
-    {
-      const double spread = m_spread.empty() ? 0. : m_spread[i];
-      const auto to = [spread](double squared) { return std::sqrt(squared + spread * spread); };
-      const double to_nearest = to(nearest == i ? 0. : squared_distance(m_points.points[i], m_points.points[nearest]));
-      m_share[i] = removal_share(m_weight[i], to_nearest, to(next.squared_distance), m_unit, m_largest_share);
-    }
-    m_cost[nearest].fetch_add(m_share[i], std::memory_order_relaxed);
+    std::copy_n(listed, following, m_following.begin() + std::ptrdiff_t(i * following));
+    m_cost[nearest].fetch_add(share(i), std::memory_order_relaxed);
   }
 
-  // Follows `nearest`, and the first present point after it, as `i`'s
-  // nearest and next.
-  void follow_after(Index i, Index nearest)
-  {
-    follow(i, nearest,
-           m_count > 1 ? m_tree->nearest_one_besides(i, nearest) : Neighbor{ 0., 0, none_index });
-  }
-
-  // Follows `i`'s nearest and next present points, searched anew among at
-  // least two.
+  // Follows `i`'s nearest and next present points, and the spares after
+  // them, searched anew among at least two.
   void follow_anew(Index i)
   {
     CGAL_precondition(m_count >= 2);
+    Neighbor found[1 + following];
+    std::size_t count = 0;
     if (is_present(i))
-      follow_after(i, i);
-    else
-    {
-      const auto [nearest, next] = m_tree->nearest_two(i);
-      follow(i, nearest.id, next);
-    }
+      found[count++] = Neighbor{ 0., m_points.input_position[i], i };
+    count += m_tree->nearest(i, 1 + following - count, found + count);
+    Index listed[1 + following];
+    for (std::size_t r = 0; r < 1 + following; ++r)
+      listed[r] = r < count ? found[r].id : none_index;
+    follow(i, listed[0], listed + 1);
+  }
+
+  // Follows, as `i`'s nearest and next, the first two of its nearest, next
+  // and spares that are still present, and the spares after them, when two
+  // are (or one, the last present point); searches anew otherwise. Only
+  // removals came since they were searched, so that they still come first
+  // among the present points.
+  void follow_still_present(Index i)
+  {
+    Index listed[1 + following] = { m_nearest[i] };
+    std::copy_n(m_following.begin() + std::ptrdiff_t(i * following), following, listed + 1);
+    std::size_t count = 0;
+    for (Index p : listed)
+      if (p != none_index && is_present(p))
+        listed[count++] = p;
+    if (count < 2 && m_count >= 2)
+      return follow_anew(i);
+    std::fill(listed + count, listed + 1 + following, none_index);
+    follow(i, listed[0], listed + 1);
   }
 
   // One round, down to `target` at most: its removals, by cost.
@@ -384,7 +425,7 @@ private:
       },
       [](std::size_t) { return true; });
     for_each_follower<ConcurrencyTag>([&](Index i) {
-      const Index a = m_nearest[i], b = m_next[i];
+      const Index a = m_nearest[i], b = next_of(i);
       if (b == none_index || (state[a].load(std::memory_order_relaxed) == beyond_threshold &&
                               state[b].load(std::memory_order_relaxed) == beyond_threshold))
         return;
@@ -430,10 +471,11 @@ private:
     if (2 * m_count < m_tree_size)
       build_tree<ConcurrencyTag>();
     for_each_follower<ConcurrencyTag>([&](Index i) {
-      if (is_present(m_nearest[i]) && (m_next[i] == none_index || is_present(m_next[i])))
+      const Index next = next_of(i);
+      if (is_present(m_nearest[i]) && (next == none_index || is_present(next)))
         return;
-      m_cost[m_nearest[i]].fetch_sub(m_share[i], std::memory_order_relaxed);
-      follow_after(i, is_present(m_nearest[i]) ? m_nearest[i] : m_next[i]);
+      unfollow(i);
+      follow_still_present(i);
     });
   }
 
@@ -455,8 +497,16 @@ private:
   Array<double> m_weight;
   double m_unit = 1.;
   std::int64_t m_largest_share = 0;
-  Array<Index> m_nearest, m_next;
-  Array<std::int64_t> m_share;
+  Array<Index> m_nearest;
+  // of each point, its next present point and then its spares, the present
+  // points that came after the next when they were searched (none_index
+  // where there were none, and when a relocation may have brought nearer
+  // ones): fewer searches, as a point searches again only once it lost
+  // all but one of them
+  static constexpr std::size_t spares = 2;
+  static constexpr std::size_t following = 1 + spares;
+  Array<Index> m_following;
+  Index next_of(Index i) const { return m_following[std::size_t(i) * following]; }
   Array<std::atomic<std::int64_t> > m_cost;
 };
 

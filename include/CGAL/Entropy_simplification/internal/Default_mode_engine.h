@@ -25,7 +25,8 @@ namespace internal {
 class Default_mode_engine
 {
 public:
-  // Computes the field from the k nearest neighbours of every point.
+  // Computes the field from the k nearest neighbours of every point, and
+  // keeps the first neighbours the elimination asked for.
   // `progress` receives the fraction done, on the calling thread; returns
   // false when it asked to stop.
   template <typename ConcurrencyTag, typename Progress>
@@ -33,7 +34,8 @@ public:
   {
     Array<Index> knn;
     return nearest_neighbors_of_all<ConcurrencyTag>(m_points, m_k, knn, [&](double f) { return progress(0.5 * f); }) &&
-           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn), m_field,
+           compute_elimination_field<ConcurrencyTag>(m_points, m_k, m_options, m_terms, std::move(knn),
+                                                     m_first_neighbors_kept, m_first_neighbors, m_field,
                                                      [&](double f) { return progress(0.5 + 0.5 * f); });
   }
 
@@ -47,10 +49,12 @@ public:
   const Elimination_field& field() const { return m_field; }
 
 protected:
+  // `first_neighbors_kept`: how many of each point's nearest neighbours
+  // initialize() keeps (see m_first_neighbors).
   Default_mode_engine(const Indexed_points& points, unsigned int k, const Options& options,
-                      const Default_mode_terms& terms)
+                      const Default_mode_terms& terms, std::size_t first_neighbors_kept = 0)
     : m_points(points), m_k(k), m_options(options), m_terms(terms), m_present(points.size(), 1),
-      m_count(points.size())
+      m_count(points.size()), m_first_neighbors_kept(first_neighbors_kept)
   {}
 
   const Indexed_points& m_points;
@@ -60,6 +64,10 @@ protected:
   Elimination_field m_field;
   Array<char> m_present;
   std::size_t m_count;
+  // the first neighbours of each point, which initialize() kept for an
+  // elimination that starts with every point present, empty once it used them
+  const std::size_t m_first_neighbors_kept;
+  Array<Index> m_first_neighbors;
 };
 
 } // namespace internal

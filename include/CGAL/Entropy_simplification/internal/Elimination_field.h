@@ -259,15 +259,30 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
   return true;
 }
 
+// The first `count` of the k nearest neighbours `knn` of each point, those
+// of point i at [i * count]; none when count is 0 or above k.
+inline Array<Index> first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
+{
+  if (count == 0 || count > k)
+    return {};
+  const std::size_t n = knn.size() / k;
+  Array<Index> first(n * count);
+  for (std::size_t i = 0; i < n; ++i)
+    std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.begin() + std::ptrdiff_t(i * count));
+  return first;
+}
+
 // The field from `knn`, the k nearest neighbours of each point nearest first
-// (those of point i at knn[i * k]), which it frees once used: the feature
+// (those of point i at knn[i * k]), which it frees once used, keeping to
+// `first` the first `first_count` of each point's (see first_neighbors),
+// once the normals it estimated on the way are freed too: the feature
 // strengths and the areas the points sample make the scales, with the
 // `terms` switched on. The entropies count for 60% of the progress, the
 // coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
-                               const Default_mode_terms& terms, Array<Index> knn, Elimination_field& field,
-                               const Progress& progress)
+                               const Default_mode_terms& terms, Array<Index> knn, std::size_t first_count,
+                               Array<Index>& first, Elimination_field& field, const Progress& progress)
 {
   Array<double> entropy;
   if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
@@ -276,6 +291,7 @@ bool compute_elimination_field(const Indexed_points& points, unsigned int k, con
   Array<double> area =
     sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
   cap_isolated_areas(area);
+  first = first_neighbors(knn, k, first_count);
   Array<Index>().swap(knn);
   Array<double> strength;
   if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, terms.coarse_scale, strength,

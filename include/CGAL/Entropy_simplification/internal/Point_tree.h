@@ -80,18 +80,25 @@ public:
     fill<ConcurrencyTag>(0);
   }
 
-  // Replaces `best` by the first `count` points of the tree other than `q`
-  // in the neighbour order of `q` (all of them when fewer). A subtree is
-  // skipped only when its box is farther than the worst point kept: the
-  // rounded distance to a box never exceeds the rounded distance to a point
-  // inside it, so ties at that distance are still considered and the order
-  // is exact.
-  void nearest(Index q, std::size_t count, Array<Neighbor>& best) const
+  // Writes to `best`, which has room for them, the first `count` points of
+  // the tree other than `q` in the neighbour order of `q` (all of them when
+  // fewer); returns how many. A subtree is skipped only when its box is
+  // farther than the worst point kept: the rounded distance to a box never
+  // exceeds the rounded distance to a point inside it, so ties at that
+  // distance are still considered and the order is exact.
+  std::size_t nearest(Index q, std::size_t count, Neighbor* best) const
   {
-    best.clear();
     Best_list list{ count, best };
     if (!m_order.empty() && count > 0)
       search_nearest(q, list);
+    return list.size;
+  }
+
+  // The same, replacing `best` by those points.
+  void nearest(Index q, std::size_t count, Array<Neighbor>& best) const
+  {
+    best.resize(count);
+    best.resize(nearest(q, count, best.data()));
   }
 
   // The first point of the tree other than `q` in the neighbour order of
@@ -102,26 +109,6 @@ public:
     Best_one one;
     search_nearest(q, one);
     return one.best.id;
-  }
-
-  // The first point of the tree other than `q` and `other` in the neighbour
-  // order of `q`. The tree must hold such a point.
-  Neighbor nearest_one_besides(Index q, Index other) const
-  {
-    Best_one one;
-    one.besides = other;
-    search_nearest(q, one);
-    return one.best;
-  }
-
-  // The first two points of the tree other than `q` in the neighbour order
-  // of `q`, as `nearest(q, 2, ...)` finds them, with no list to keep. The
-  // tree must hold two points other than `q`.
-  std::pair<Neighbor, Neighbor> nearest_two(Index q) const
-  {
-    Best_two two;
-    search_nearest(q, two);
-    return { two.first, two.second };
   }
 
   // Whether the tree holds a point other than `q` that comes before `than`
@@ -291,39 +278,39 @@ private:
   struct Best_list
   {
     std::size_t count;
-    Array<Neighbor>& list;
+    Neighbor* list; // room for `count`
+    std::size_t size = 0;
     double bound() const
     {
-      return list.size() < count ? std::numeric_limits<double>::infinity() : list.back().squared_distance;
+      return size < count ? std::numeric_limits<double>::infinity() : list[size - 1].squared_distance;
     }
-    void offer(const Neighbor& candidate) { keep_if_better(candidate, count, list); }
+    // The candidate moves up from the end of the list: the lists are short,
+    // and a linear walk costs less than a binary search's mispredicted
+    // branches.
+    void offer(const Neighbor& candidate)
+    {
+      std::size_t slot = size;
+      if (slot == count)
+      {
+        if (!(candidate < list[slot - 1]))
+          return;
+        --slot;
+      }
+      else
+        ++size;
+      for (; slot > 0 && candidate < list[slot - 1]; --slot)
+        list[slot] = list[slot - 1];
+      list[slot] = candidate;
+    }
   };
   struct Best_one
   {
     Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
-    Index besides = std::numeric_limits<Index>::max(); // a point not offered, besides `q`
     double bound() const { return best.squared_distance; }
     void offer(const Neighbor& candidate)
     {
-      if (candidate < best && candidate.id != besides)
+      if (candidate < best)
         best = candidate;
-    }
-  };
-
-  struct Best_two
-  {
-    Neighbor first{ std::numeric_limits<double>::infinity(), 0, 0 };
-    Neighbor second = first;
-    double bound() const { return second.squared_distance; }
-    void offer(const Neighbor& candidate)
-    {
-      if (candidate < first)
-      {
-        second = first;
-        first = candidate;
-      }
-      else if (candidate < second)
-        second = candidate;
     }
   };
 
@@ -467,24 +454,6 @@ private:
         if (!is_removed(near[t]))
           inside.push_back(near[t]);
     }
-  }
-
-  // The candidate moves up from the end of the list: the lists are short,
-  // and a linear walk costs less than a binary search's mispredicted branches.
-  static void keep_if_better(const Neighbor& candidate, std::size_t count, Array<Neighbor>& best)
-  {
-    std::size_t slot = best.size();
-    if (slot == count)
-    {
-      if (!(candidate < best.back()))
-        return;
-      --slot;
-    }
-    else
-      best.push_back(candidate);
-    for (; slot > 0 && candidate < best[slot - 1]; --slot)
-      best[slot] = best[slot - 1];
-    best[slot] = candidate;
   }
 
   const Indexed_points& m_points;
