@@ -256,7 +256,10 @@ TEST_CASE("Default mode: the removal order equals the reference's on tied distan
     const std::size_t target = points.size() / 10;
     const std::vector<std::size_t> expected =
       reference::removal_order(points, reference::feature_field(points, k, ES::Options()), target);
-    CHECK(removals(simplify(points, k, CGAL::parameters::number_of_output_points(target))) == expected);
+    const auto np = CGAL::parameters::number_of_output_points(target);
+    CHECK(removals(simplify(points, k, np)) == expected);
+    CHECK(removals(test_parallel::on_two_threads_or_more(
+            [&] { return simplify<test_parallel::Parallel_tag>(points, k, np); })) == expected);
   }
 }
 

@@ -1,10 +1,10 @@
 // The package's tree against a linear scan: the k nearest neighbours in
 // the package's order (squared distance, then input position), the points
 // within a reach that depends on both points' scales, removals, and the
-// coverage elimination's searches (two nearest, whether one is nearer). The
-// clouds hold thousands of points, so that the tree has many levels, and
-// points on an integer lattice, so that many distances tie. And the kd
-// order the tree follows against the independent reference's.
+// coverage elimination's searches (the first one to four, whether one is
+// nearer). The clouds hold thousands of points, so that the tree has many
+// levels, and points on an integer lattice, so that many distances tie.
+// And the kd order the tree follows against the independent reference's.
 
 #include <catch2/catch.hpp>
 

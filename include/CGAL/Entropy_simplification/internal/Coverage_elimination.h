@@ -119,7 +119,10 @@ public:
     CGAL_precondition(target >= 1);
     const bool relocates_levels = std::exchange(m_relocates_levels, false);
     if (m_count <= target)
+    {
+      Array<Index>().swap(m_first_neighbors); // not to be held while the caller goes on
       return true;
+    }
     follow_present<ConcurrencyTag>();
     if (relocates_levels)
     {
@@ -177,8 +180,9 @@ private:
     Array<std::atomic<std::int64_t> >().swap(m_cost);
   }
 
-  // Every point's nearest and next present point and its share, and the
-  // costs, from the present points alone.
+  // Every point's nearest, next and spares, and the costs, from the present
+  // points alone; from the field's first neighbours when every point is
+  // present.
   template <typename ConcurrencyTag>
   void follow_present()
   {
@@ -190,11 +194,13 @@ private:
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);
     list_present();
     build_tree<ConcurrencyTag>();
-    if (m_count == n && m_first_neighbors.size() == n * following)
+    Array<Index> first_neighbors;
+    first_neighbors.swap(m_first_neighbors);
+    if (m_count == n && first_neighbors.size() == n * following)
     {
       // each point is its own nearest, and its first neighbours follow it,
       // as the search would find them
-      m_following = std::move(m_first_neighbors);
+      m_following = std::move(first_neighbors);
       for_each_follower<ConcurrencyTag>([&](Index i) {
         m_nearest[i] = i;
         m_cost[i].fetch_add(share(i), std::memory_order_relaxed);
@@ -202,10 +208,10 @@ private:
     }
     else
     {
+      Array<Index>().swap(first_neighbors);
       m_following.assign(n * following, none_index);
       for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
     }
-    Array<Index>().swap(m_first_neighbors);
   }
 
   // Calls `f(i)` for each point `i` that follows the present points: every
@@ -224,8 +230,8 @@ private:
   // stands for the input points nearest it, and these representatives
   // alone follow the present points from then on: every later present
   // point is one of them. With every input point following, each halving
-  // of the present points searched the nearest and next of about every
-  // input point twice, and the stages below 1% cost about a third of a
+  // of the present points searched anew about every input point (twice
+  // before the spares), and the stages below 1% cost about a third of a
   // direct call to 1%. A representative weighs as much as its input points
   // together, and its spread is their mean distance to it (weighted, both
   // summed in input order): it is as far from a point at distance d as
@@ -266,8 +272,9 @@ private:
   // Follows the present points after a relocation brought back the points
   // `arrived` in place of others: only the points whose nearest or next
   // present point left, or to which an arriving point is nearer than their
-  // next, search anew. The others keep their nearest, next and share, as
-  // follow_present() would find them. An arriving point replaces its own
+  // next, search anew. The others keep their nearest and next, as
+  // follow_present() would find them, but not their spares, to which an
+  // arriving point may be nearer. An arriving point replaces its own
   // nearest (its cell's site), so it searches anew too.
   template <typename ConcurrencyTag>
   void follow_relocated(const Array<Index>& arrived)
@@ -284,8 +291,7 @@ private:
                                             m_points.input_position[next], next });
       if (still_followed)
       {
-        // an arriving point may come before a spare
-        std::fill_n(m_following.begin() + std::ptrdiff_t(i * following + 1), spares, none_index);
+        std::fill_n(following_of(i) + 1, spares, none_index);
         return;
       }
       unfollow(i);
@@ -310,7 +316,9 @@ private:
 
   // What `i` adds to the cost of its nearest present point: its share of
   // that point's removal (see removal_share), from its nearest and next.
-  // It is computed again rather than kept, as the spares take its memory.
+  // It is computed again rather than kept, as the spares take its memory,
+  // and the same expression gives the same value each time on builds that
+  // do not contract floating-point operations (x86-64 without -march).
   std::int64_t share(Index i) const
   {
     const Index nearest = m_nearest[i], next = next_of(i);
@@ -323,6 +331,9 @@ private:
     return removal_share(m_weight[i], to(nearest), to(next), m_unit, m_largest_share);
   }
 
+  Index* following_of(Index i) { return m_following.data() + std::size_t(i) * following; }
+  Index next_of(Index i) const { return m_following[std::size_t(i) * following]; }
+
   // Takes `i`'s share out of the cost of its nearest, before it follows
   // others.
   void unfollow(Index i) { m_cost[m_nearest[i]].fetch_sub(share(i), std::memory_order_relaxed); }
@@ -334,7 +345,7 @@ private:
   void follow(Index i, Index nearest, const Index* listed)
   {
     m_nearest[i] = nearest;
-    std::copy_n(listed, following, m_following.begin() + std::ptrdiff_t(i * following));
+    std::copy_n(listed, following, following_of(i));
     m_cost[nearest].fetch_add(share(i), std::memory_order_relaxed);
   }
 
@@ -362,11 +373,12 @@ private:
   void follow_still_present(Index i)
   {
     Index listed[1 + following] = { m_nearest[i] };
-    std::copy_n(m_following.begin() + std::ptrdiff_t(i * following), following, listed + 1);
+    std::copy_n(following_of(i), following, listed + 1);
     std::size_t count = 0;
     for (Index p : listed)
       if (p != none_index && is_present(p))
         listed[count++] = p;
+    CGAL_assertion(count >= 1); // no round removes both nearest and next
     if (count < 2 && m_count >= 2)
       return follow_anew(i);
     std::fill(listed + count, listed + 1 + following, none_index);
@@ -454,9 +466,8 @@ private:
   }
 
   // Removes the points of `round`, then moves each point whose nearest or
-  // next present point was removed to its new ones, its share with it: a
-  // point that loses its nearest keeps its next, now its nearest, as no
-  // round removes both.
+  // next present point was removed to its new ones (see
+  // follow_still_present): no round removes both.
   template <typename ConcurrencyTag>
   void remove_points(const Array<Index>& round)
   {
@@ -506,7 +517,6 @@ private:
   static constexpr std::size_t spares = 2;
   static constexpr std::size_t following = 1 + spares;
   Array<Index> m_following;
-  Index next_of(Index i) const { return m_following[std::size_t(i) * following]; }
   Array<std::atomic<std::int64_t> > m_cost;
 };
 
