@@ -3,7 +3,8 @@
 //
 // The package's loop over indices: its blocks follow the time they take, so
 // that a loop of slow calls reports progress often and stops soon when asked,
-// and a loop of cheap calls goes in blocks that grow.
+// and a loop of cheap calls goes in blocks that grow. The selection of the
+// count-th smallest value is std::nth_element's.
 
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -12,6 +13,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -61,4 +65,55 @@ TEST_CASE("Loops: cheap calls go in growing blocks, every index once", "[kernels
   // the former fixed blocks of 32768 indices made 31 reports
   CHECK(reports.size() <= 31);
   CHECK(reports.back() == visits.size());
+}
+
+namespace {
+
+// The count-th smallest of `values` by std::nth_element, on a copy.
+template <typename T>
+T nth_by_std(std::vector<T> values, std::size_t count)
+{
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(count - 1), values.end());
+  return values[count - 1];
+}
+
+template <typename T>
+void require_nth_smallest_as_std(const std::vector<T>& values)
+{
+  const std::size_t n = values.size();
+  for (std::size_t count : { std::size_t(1), std::size_t(2), n / 10, n / 10 + 1, n / 2, n - 1, n })
+  {
+    INFO("n = " << n << ", count = " << count);
+    const T expected = nth_by_std(values, count);
+    REQUIRE(ESI::nth_smallest<CGAL::Sequential_tag>(values, count, std::less<T>()) == expected);
+    REQUIRE(ESI::nth_smallest<CGAL::Parallel_if_available_tag>(values, count, std::less<T>()) == expected);
+  }
+}
+
+} // namespace
+
+TEST_CASE("Selection: the count-th smallest is nth_element's, within the sample's bracket or not", "[kernels]")
+{
+  std::mt19937_64 random(2018);
+  // below, at and above the size from which a sample brackets the value
+  // (16 samples of 4096), with distinct values and with many ties
+  for (std::size_t n : { std::size_t(1000), std::size_t(65535), std::size_t(65536), std::size_t(300007) })
+    for (std::uint64_t range : { std::uint64_t(0), std::uint64_t(50) })
+    {
+      std::vector<std::uint64_t> values(n);
+      for (std::uint64_t& v : values)
+        v = range == 0 ? random() : random() % range;
+      require_nth_smallest_as_std(values);
+    }
+  // a sample that misses: every sampled place holds the least value, so
+  // that the bracket holds the least values alone
+  std::vector<std::uint64_t> values(300007);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = i % (values.size() / 4096) == 0 ? 0 : 1000 + random() % 1000000;
+  require_nth_smallest_as_std(values);
+  // sorted and reversed
+  std::sort(values.begin(), values.end());
+  require_nth_smallest_as_std(values);
+  std::reverse(values.begin(), values.end());
+  require_nth_smallest_as_std(values);
 }

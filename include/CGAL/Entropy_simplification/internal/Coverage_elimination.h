@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -165,10 +166,13 @@ private:
     return Key{ m_cost[s].load(std::memory_order_relaxed), scrambled(m_points.input_position[s]) };
   }
 
-  // The relocation that follows a run needs none of its memory, and a run
-  // that follows it starts from the present points alone.
+  // The relocation that follows a run needs none of its memory but the
+  // nearest present points of a direct call, from which it starts, and a
+  // run that follows it starts from the present points alone.
   void release()
   {
+    if (m_followers.empty() && !m_level_cells)
+      m_nearest_present = std::move(m_nearest);
     Array<Index>().swap(m_followers);
     Array<double>().swap(m_spread);
     m_level_cells.reset();
@@ -426,13 +430,15 @@ private:
   template <typename ConcurrencyTag>
   Array<Index> removable_in_round(std::size_t removals) const
   {
-    const Key threshold = key_of_present((std::max)(std::size_t(1), m_count / 10));
+    const Array<Key> keys = keys_of_present<ConcurrencyTag>();
+    const Key threshold =
+      nth_smallest<ConcurrencyTag>(keys, (std::max)(std::size_t(1), m_count / 10), std::less<Key>());
     enum : char { beyond_threshold, removable, blocked };
     Array<std::atomic<char> > state(m_points.size()); // zero: beyond_threshold
     for_each_index<ConcurrencyTag>(
       m_listed.size(),
       [&](std::size_t r) {
-        if (!(threshold < key(m_listed[r])))
+        if (!(threshold < keys[r]))
           state[m_listed[r]].store(removable, std::memory_order_relaxed);
       },
       [](std::size_t) { return true; });
@@ -445,24 +451,36 @@ private:
       if (state[later].load(std::memory_order_relaxed) != beyond_threshold)
         state[later].store(blocked, std::memory_order_relaxed);
     });
-    Array<Index> round;
-    for (Index s : m_listed)
-      if (state[s].load(std::memory_order_relaxed) == removable)
-        round.push_back(s);
-    std::sort(round.begin(), round.end(), [this](Index a, Index b) { return key(a) < key(b); });
-    round.resize((std::min)(round.size(), removals));
-    return round;
+    Array<std::pair<Key, Index> > round;
+    for (std::size_t r = 0; r < m_listed.size(); ++r)
+      if (state[m_listed[r]].load(std::memory_order_relaxed) == removable)
+        round.emplace_back(keys[r], m_listed[r]);
+    return first_by_key<ConcurrencyTag>(std::move(round), removals);
   }
 
-  // The key of the `count`-th present point in the order of removal.
-  Key key_of_present(std::size_t count) const
+  // The keys of the present points, in the order of m_listed.
+  template <typename ConcurrencyTag>
+  Array<Key> keys_of_present() const
   {
-    Array<Key> keys;
-    keys.reserve(m_listed.size());
-    for (Index s : m_listed)
-      keys.push_back(key(s));
-    std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - 1), keys.end());
-    return keys[count - 1];
+    Array<Key> keys(m_listed.size());
+    for_each_index<ConcurrencyTag>(
+      m_listed.size(), [&](std::size_t r) { keys[r] = key(m_listed[r]); }, [](std::size_t) { return true; });
+    return keys;
+  }
+
+  // The first `count` points of `keyed` by key, in that order (all of them
+  // when fewer).
+  template <typename ConcurrencyTag>
+  static Array<Index> first_by_key(Array<std::pair<Key, Index> > keyed, std::size_t count)
+  {
+    sort_by<ConcurrencyTag>(keyed.begin(), keyed.end(),
+                            [](const std::pair<Key, Index>& a, const std::pair<Key, Index>& b) {
+                              return a.first < b.first;
+                            });
+    Array<Index> first;
+    for (std::size_t r = 0; r < (std::min)(count, keyed.size()); ++r)
+      first.push_back(keyed[r].second);
+    return first;
   }
 
   // Removes the points of `round`, then moves each point whose nearest or

@@ -47,6 +47,10 @@ public:
     return estimate_normals<ConcurrencyTag>(m_points, subset, m_k, m_options.normal_estimation);
   }
   const Elimination_field& field() const { return m_field; }
+  // Each point's nearest present point after the last run, itself when
+  // present (ties by input position), when the elimination followed them
+  // for every point, or nothing; taken once.
+  Array<Index> take_nearest_present() { return std::move(m_nearest_present); }
 
 protected:
   // `first_neighbors_kept`: how many of each point's nearest neighbours
@@ -68,6 +72,7 @@ protected:
   // elimination that starts with every point present, empty once it used them
   const std::size_t m_first_neighbors_kept;
   Array<Index> m_first_neighbors;
+  Array<Index> m_nearest_present; // see take_nearest_present
 };
 
 } // namespace internal

@@ -37,26 +37,45 @@ struct Voronoi_cells
   Array<Index> site_of;  // for each point, the rank of its site in `sites`
 };
 
+// For each point, the present point nearest it (ties by input position):
+// itself when present. At least one point must be present.
 template <typename ConcurrencyTag>
-Voronoi_cells voronoi_cells(const Indexed_points& points, const Array<char>& present)
+Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present)
+{
+  if (std::find(present.begin(), present.end(), 0) == present.end())
+    return all_indices(points.size());
+  Array<Index> sites;
+  for (Index i = 0; i < Index(points.size()); ++i)
+    if (present[i])
+      sites.push_back(i);
+  const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
+  Array<Index> nearest(points.size());
+  for_each_index<ConcurrencyTag>(
+    points.size(), [&](std::size_t i) { nearest[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
+    [](std::size_t) { return true; });
+  return nearest;
+}
+
+// The cells from `nearest`, each point's nearest present point (see
+// nearest_present_points), whose memory they take.
+template <typename ConcurrencyTag>
+Voronoi_cells voronoi_cells(const Array<char>& present, Array<Index> nearest)
 {
   Voronoi_cells cells;
-  Array<Index>& rank = cells.site_of; // the rank of each site, filled in first
-  rank.assign(points.size(), 0);
-  for (Index i = 0; i < Index(points.size()); ++i)
+  Array<Index>& rank = cells.site_of = std::move(nearest);
+  for (Index i = 0; i < Index(rank.size()); ++i)
     if (present[i])
     {
       rank[i] = Index(cells.sites.size());
       cells.sites.push_back(i);
     }
-  const Point_tree tree(points, cells.sites.begin(), cells.sites.end(), ConcurrencyTag());
-  // a site is its own nearest, which the search leaves out; the others read
-  // the rank of a site, which is never overwritten
+  // the others read the rank that took the place of their site, which is
+  // never overwritten
   for_each_index<ConcurrencyTag>(
-    points.size(),
+    rank.size(),
     [&](std::size_t i) {
       if (!present[i])
-        rank[i] = rank[tree.nearest_one(Index(i))];
+        rank[i] = rank[rank[i]];
     },
     [](std::size_t) { return true; });
   return cells;
@@ -199,17 +218,23 @@ struct Relocation
 
 // A relaxation in Lloyd's manner restricted to the input points, `iterations` times:
 // each input point joins the cell of its nearest present point, and each
-// cell keeps its median (see cell_medians, and `terms`); then, with
+// cell keeps its median (see cell_medians, and `terms`), the first time
+// from `nearest`, the nearest present points the elimination left, unless
+// it is empty (see nearest_present_points); then, with
 // `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count), each
 // point's crowding measured against its `scale`. The count does not change.
 template <typename ConcurrencyTag>
 Relocation relocate_within_input(const Indexed_points& points, Array<char>& present, int iterations,
-                                 const Default_mode_terms& terms, const Array<double>& scale)
+                                 const Default_mode_terms& terms, const Array<double>& scale, Array<Index> nearest)
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
   for (int iteration = 0; iteration < iterations; ++iteration)
-    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(points, present), terms);
+  {
+    if (iteration > 0 || nearest.empty())
+      nearest = nearest_present_points<ConcurrencyTag>(points, present);
+    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(present, std::move(nearest)), terms);
+  }
   Relocation relocation;
   if (terms.coverage_swaps)
   {

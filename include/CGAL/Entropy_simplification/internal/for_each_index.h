@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A loop over indices, parallel with CGAL::Parallel_tag, that reports progress
-// on the calling thread, and a sort, parallel with CGAL::Parallel_tag.
+// on the calling thread, and a sort and a selection, parallel with
+// CGAL::Parallel_tag.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
@@ -19,6 +20,8 @@
 #include <chrono>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -122,6 +125,65 @@ void sort_by(Iterator first, Iterator beyond, const Less& less)
   else
 #endif
     std::sort(first, beyond, less);
+}
+
+// The `count`-th smallest of `values` by `less` (from 1), as
+// std::nth_element would place it; `values` are left as they are. Its passes
+// over all values run in parallel with CGAL::Parallel_tag: a regular sample
+// brackets the value, the values below and within the bracket are counted,
+// and only those within it, a few hundredths, are selected among, unless
+// the bracket missed, when all of them are.
+template <typename ConcurrencyTag, typename T, typename Less>
+T nth_smallest(const std::vector<T>& values, std::size_t count, const Less& less)
+{
+  constexpr std::size_t samples = 4096, margin = 64, chunk = std::size_t(1) << 14;
+  const std::size_t n = values.size();
+  const auto select_among = [&](std::vector<T> candidates, std::size_t rank) {
+    std::nth_element(candidates.begin(), candidates.begin() + std::ptrdiff_t(rank - 1), candidates.end(), less);
+    return candidates[rank - 1];
+  };
+  if (n < 16 * samples)
+    return select_among(values, count);
+  std::vector<T> sample;
+  for (std::size_t s = 0; s < samples; ++s)
+    sample.push_back(values[s * (n / samples)]);
+  std::sort(sample.begin(), sample.end(), less);
+  const std::size_t at = count * samples / n;
+  const T low = sample[at > margin ? at - margin : 0], high = sample[(std::min)(at + margin, samples - 1)];
+  const auto within = [&](const T& v) { return !less(v, low) && !less(high, v); };
+  // of each chunk of values, how many lie below the bracket and within it
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  std::vector<std::size_t> below(chunks, 0), inside(chunks, 0);
+  for_each_index<ConcurrencyTag>(
+    chunks,
+    [&](std::size_t c) {
+      for (std::size_t i = c * chunk; i < (std::min)(n, (c + 1) * chunk); ++i)
+      {
+        below[c] += std::size_t(less(values[i], low));
+        inside[c] += std::size_t(within(values[i]));
+      }
+    },
+    [](std::size_t) { return true; });
+  std::size_t below_count = 0, inside_count = 0;
+  for (std::size_t c = 0; c < chunks; ++c)
+  {
+    below_count += below[c];
+    // each chunk's first place in the bracket's values
+    inside_count += std::exchange(inside[c], inside_count);
+  }
+  if (count <= below_count || count > below_count + inside_count)
+    return select_among(values, count);
+  std::vector<T> bracket(inside_count);
+  for_each_index<ConcurrencyTag>(
+    chunks,
+    [&](std::size_t c) {
+      std::size_t place = inside[c];
+      for (std::size_t i = c * chunk; i < (std::min)(n, (c + 1) * chunk); ++i)
+        if (within(values[i]))
+          bracket[place++] = values[i];
+    },
+    [](std::size_t) { return true; });
+  return select_among(std::move(bracket), count - below_count);
 }
 
 } // namespace internal

@@ -79,37 +79,26 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
 }
 
 // The relocation that ends the default mode, with the `terms` switched on,
-// on the `scale` of each point. A relocated point takes the place, in the
+// on the `scale` of each point, from `nearest`, each point's nearest present
+// point after the run, when the engine kept them (see
+// relocate_within_input). A relocated point takes the place, in the
 // removal order, of the point that replaces it. Returns each point's
 // nearest present point once relocated, when the relocation found them
 // (see Relocation), or nothing.
 template <typename ConcurrencyTag>
 Array<Index> relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
-                      const Array<double>& scale)
+                      const Array<double>& scale, Array<Index> nearest)
 {
   Array<char> present = present_after(run, points.size());
   Array<Index> rank(points.size(), 0);
   for (std::size_t r = 0; r < run.removed.size(); ++r)
     rank[run.removed[r]] = Index(r);
   Relocation relocation =
-    relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms, scale);
+    relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms, scale,
+                                          std::move(nearest));
   for (const auto& swap : relocation.swaps)
     run.removed[rank[swap.second]] = swap.first;
   return std::move(relocation.site);
-}
-
-// For each point, the present point nearest it (ties by input position):
-// itself when present.
-template <typename ConcurrencyTag>
-Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present)
-{
-  if (std::find(present.begin(), present.end(), 0) == present.end())
-    return all_indices(points.size());
-  const Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(points, present);
-  Array<Index> site(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    site[i] = cells.sites[cells.site_of[i]];
-  return site;
 }
 
 // Goes on removing among the present points of `engine` down to one point,
@@ -200,9 +189,9 @@ std::optional<Array<Index> > run_default_mode(Engine& engine, const Indexed_poin
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
-  Array<Index> site; // each point's nearest kept point, when the relocation found them
+  Array<Index> site = engine.take_nearest_present(); // each point's nearest kept point, when known
   if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale);
+    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale, std::move(site));
   if (through &&
       !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
     return std::nullopt;
