@@ -81,12 +81,13 @@ template <typename T>
 void require_nth_smallest_as_std(const std::vector<T>& values)
 {
   const std::size_t n = values.size();
-  for (std::size_t count : { std::size_t(1), std::size_t(2), n / 10, n / 10 + 1, n / 2, n - 1, n })
+  for (std::size_t count : { std::size_t(1), std::size_t(2), n / 10 + 1, n / 2 + 1, n - 1, n })
   {
     INFO("n = " << n << ", count = " << count);
     const T expected = nth_by_std(values, count);
-    REQUIRE(ESI::nth_smallest<CGAL::Sequential_tag>(values, count, std::less<T>()) == expected);
-    REQUIRE(ESI::nth_smallest<CGAL::Parallel_if_available_tag>(values, count, std::less<T>()) == expected);
+    const auto value = [&values](std::size_t r) { return values[r]; };
+    REQUIRE(ESI::nth_smallest<CGAL::Sequential_tag>(n, value, count, std::less<T>()) == expected);
+    REQUIRE(ESI::nth_smallest<CGAL::Parallel_if_available_tag>(n, value, count, std::less<T>()) == expected);
   }
 }
 
@@ -95,9 +96,10 @@ void require_nth_smallest_as_std(const std::vector<T>& values)
 TEST_CASE("Selection: the count-th smallest is nth_element's, within the sample's bracket or not", "[kernels]")
 {
   std::mt19937_64 random(2018);
-  // below, at and above the size from which a sample brackets the value
-  // (16 samples of 4096), with distinct values and with many ties
-  for (std::size_t n : { std::size_t(1000), std::size_t(65535), std::size_t(65536), std::size_t(300007) })
+  // below, at and above the size of the sample (4096), with distinct values
+  // and with many ties
+  for (std::size_t n : { std::size_t(2), std::size_t(1000), std::size_t(4095), std::size_t(4096), std::size_t(4097),
+                         std::size_t(65536), std::size_t(300007) })
     for (std::uint64_t range : { std::uint64_t(0), std::uint64_t(50) })
     {
       std::vector<std::uint64_t> values(n);

@@ -118,6 +118,7 @@ public:
   bool remove_down_to(std::size_t target, const Removed& removed)
   {
     CGAL_precondition(target >= 1);
+    Array<Index>().swap(m_nearest_present); // an earlier run's
     const bool relocates_levels = std::exchange(m_relocates_levels, false);
     if (m_count <= target)
     {
@@ -431,8 +432,8 @@ private:
   Array<Index> removable_in_round(std::size_t removals) const
   {
     const Array<Key> keys = keys_of_present<ConcurrencyTag>();
-    const Key threshold =
-      nth_smallest<ConcurrencyTag>(keys, (std::max)(std::size_t(1), m_count / 10), std::less<Key>());
+    const Key threshold = nth_smallest<ConcurrencyTag>(
+      keys.size(), [&](std::size_t r) { return keys[r]; }, (std::max)(std::size_t(1), m_count / 10), std::less<Key>());
     enum : char { beyond_threshold, removable, blocked };
     Array<std::atomic<char> > state(m_points.size()); // zero: beyond_threshold
     for_each_index<ConcurrencyTag>(
@@ -469,7 +470,8 @@ private:
   }
 
   // The first `count` points of `keyed` by key, in that order (all of them
-  // when fewer).
+  // when fewer): keys are a total order, their scrambled input positions
+  // being distinct, so that the order does not depend on the tag.
   template <typename ConcurrencyTag>
   static Array<Index> first_by_key(Array<std::pair<Key, Index> > keyed, std::size_t count)
   {
@@ -478,6 +480,7 @@ private:
                               return a.first < b.first;
                             });
     Array<Index> first;
+    first.reserve((std::min)(count, keyed.size()));
     for (std::size_t r = 0; r < (std::min)(count, keyed.size()); ++r)
       first.push_back(keyed[r].second);
     return first;

@@ -49,7 +49,8 @@ public:
   const Elimination_field& field() const { return m_field; }
   // Each point's nearest present point after the last run, itself when
   // present (ties by input position), when the elimination followed them
-  // for every point, or nothing; taken once.
+  // for every point, or nothing; taken once. Those of a run the callback
+  // stopped include the removals of its last round that it did not report.
   Array<Index> take_nearest_present() { return std::move(m_nearest_present); }
 
 protected:

@@ -16,6 +16,8 @@
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
+#include <CGAL/assertions.h>
+
 #include <boost/range/irange.hpp>
 
 #include <algorithm>
@@ -61,6 +63,7 @@ Array<Index> nearest_present_points(const Indexed_points& points, const Array<ch
 template <typename ConcurrencyTag>
 Voronoi_cells voronoi_cells(const Array<char>& present, Array<Index> nearest)
 {
+  CGAL_precondition(nearest.size() == present.size());
   Voronoi_cells cells;
   Array<Index>& rank = cells.site_of = std::move(nearest);
   for (Index i = 0; i < Index(rank.size()); ++i)
@@ -75,7 +78,10 @@ Voronoi_cells voronoi_cells(const Array<char>& present, Array<Index> nearest)
     rank.size(),
     [&](std::size_t i) {
       if (!present[i])
+      {
+        CGAL_assertion(present[rank[i]]);
         rank[i] = rank[rank[i]];
+      }
     },
     [](std::size_t) { return true; });
   return cells;
@@ -235,6 +241,7 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
       nearest = nearest_present_points<ConcurrencyTag>(points, present);
     present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(present, std::move(nearest)), terms);
   }
+  Array<Index>().swap(nearest); // unused without iterations, not to be held through the swaps
   Relocation relocation;
   if (terms.coverage_swaps)
   {

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -332,62 +333,12 @@ private:
   }
   std::size_t key_blocks() const { return (m_listed.size() + key_block - 1) / key_block; }
 
-  // Two keys, from a sample of the present points, between which the
-  // `count`-th present point most likely falls; none on a side that the
-  // sample does not bound.
-  std::pair<std::optional<Key>, std::optional<Key> > likely_bounds(std::size_t count) const
-  {
-    Array<Key> sample;
-    for (std::size_t r = 0; r < m_listed.size(); r += sample_stride)
-      sample.push_back(key(m_listed[r]));
-    const double rank = double(count) / double(m_count) * double(sample.size());
-    const double margin = 4. * std::sqrt(double(sample.size())) + 8.;
-    auto at_rank = [&](double r) -> std::optional<Key> {
-      if (r < 0. || r >= double(sample.size()))
-        return std::nullopt;
-      std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(r), sample.end());
-      return sample[std::size_t(r)];
-    };
-    return { at_rank(std::floor(rank - margin)), at_rank(std::ceil(rank + margin)) };
-  }
-
-  // The key of the `count`-th present point in the order of removal: the
-  // keys between the likely bounds are counted and listed in parallel, and
-  // only those are ordered; all of them when the bounds missed.
+  // The key of the `count`-th present point in the order of removal.
   template <typename ConcurrencyTag>
   Key key_of_present(std::size_t count) const
   {
-    // named, not structured bindings, which a lambda cannot capture before C++20
-    const std::pair<std::optional<Key>, std::optional<Key> > bounds = likely_bounds(count);
-    const std::optional<Key>& low = bounds.first;
-    const std::optional<Key>& high = bounds.second;
-    const std::size_t blocks = key_blocks();
-    Array<std::size_t> before(blocks, 0);
-    Array<Array<Key> > between(blocks);
-    for_each_present_block<ConcurrencyTag>([&](std::size_t b, Index i) {
-      const Key k = key(i);
-      if (low && k < *low)
-        ++before[b];
-      else if (!(high && *high < k))
-        between[b].push_back(k);
-    });
-    std::size_t first = 0;
-    for (std::size_t b = 0; b < blocks; ++b)
-      first += before[b];
-    Array<Key> keys;
-    for (Array<Key>& block : between)
-    {
-      keys.insert(keys.end(), block.begin(), block.end());
-      Array<Key>().swap(block);
-    }
-    if (!(first < count && count <= first + keys.size()))
-    {
-      keys.clear();
-      for_each_present_block<Sequential_tag>([&](std::size_t, Index i) { keys.push_back(key(i)); });
-      first = 0;
-    }
-    std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(count - first - 1), keys.end());
-    return keys[count - first - 1];
+    return nth_smallest<ConcurrencyTag>(
+      m_listed.size(), [&](std::size_t r) { return key(m_listed[r]); }, count, std::less<Key>());
   }
 
   // The key of the `count`-th present point in the order of removal, and
@@ -581,7 +532,6 @@ private:
   // the blocks of indices whose keys are read in parallel, and the stride
   // of the sample that bounds a threshold
   static constexpr std::size_t key_block = std::size_t(1) << 14;
-  static constexpr std::size_t sample_stride = 16;
   // CSR offsets of each point's neighbours: 64-bit, as dense clouds can hold
   // more than 2^32 pairs within reach
   Array<std::size_t> m_first;

@@ -8,6 +8,7 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -127,63 +129,82 @@ void sort_by(Iterator first, Iterator beyond, const Less& less)
     std::sort(first, beyond, less);
 }
 
-// The `count`-th smallest of `values` by `less` (from 1), as
-// std::nth_element would place it; `values` are left as they are. Its passes
-// over all values run in parallel with CGAL::Parallel_tag: a regular sample
-// brackets the value, the values below and within the bracket are counted,
-// and only those within it, a few hundredths, are selected among, unless
-// the bracket missed, when all of them are.
-template <typename ConcurrencyTag, typename T, typename Less>
-T nth_smallest(const std::vector<T>& values, std::size_t count, const Less& less)
+// Two values between which the `count`-th smallest of the `n` values
+// `value(r)` most likely lies: those four standard deviations of a
+// sample's rank (and a few more) below and above it in a regular sample.
+template <typename Value, typename Less>
+auto sampled_bracket(std::size_t n, const Value& value, std::size_t count, const Less& less)
 {
-  constexpr std::size_t samples = 4096, margin = 64, chunk = std::size_t(1) << 14;
-  const std::size_t n = values.size();
-  const auto select_among = [&](std::vector<T> candidates, std::size_t rank) {
-    std::nth_element(candidates.begin(), candidates.begin() + std::ptrdiff_t(rank - 1), candidates.end(), less);
-    return candidates[rank - 1];
-  };
-  if (n < 16 * samples)
-    return select_among(values, count);
-  std::vector<T> sample;
+  constexpr std::size_t most_samples = 4096;
+  const std::size_t samples = (std::min)(n, most_samples), stride = n / samples;
+  std::vector<std::decay_t<decltype(value(std::size_t(0)))> > sample;
   for (std::size_t s = 0; s < samples; ++s)
-    sample.push_back(values[s * (n / samples)]);
+    sample.push_back(value(s * stride));
   std::sort(sample.begin(), sample.end(), less);
   const std::size_t at = count * samples / n;
-  const T low = sample[at > margin ? at - margin : 0], high = sample[(std::min)(at + margin, samples - 1)];
-  const auto within = [&](const T& v) { return !less(v, low) && !less(high, v); };
-  // of each chunk of values, how many lie below the bracket and within it
+  const std::size_t margin = std::size_t(4. * std::sqrt(double(at) * double(samples - at) / double(samples))) + 8;
+  return std::make_pair(sample[at > margin ? at - margin : 0], sample[(std::min)(at + margin, samples - 1)]);
+}
+
+// The values `value(r)`, r in [0, n), within [low, high] by `less`, in no
+// particular order, and in `below` how many lie below `low`; counted and
+// listed a chunk at a time, in parallel with CGAL::Parallel_tag.
+template <typename ConcurrencyTag, typename Value, typename T, typename Less>
+std::vector<T> values_within(std::size_t n, const Value& value, const T& low, const T& high, const Less& less,
+                             std::size_t& below)
+{
+  constexpr std::size_t chunk = std::size_t(1) << 14;
   const std::size_t chunks = (n + chunk - 1) / chunk;
-  std::vector<std::size_t> below(chunks, 0), inside(chunks, 0);
+  std::vector<std::size_t> below_in(chunks, 0);
+  std::vector<std::vector<T> > within_in(chunks);
   for_each_index<ConcurrencyTag>(
     chunks,
     [&](std::size_t c) {
-      for (std::size_t i = c * chunk; i < (std::min)(n, (c + 1) * chunk); ++i)
+      std::size_t count = 0;
+      for (std::size_t r = c * chunk; r < (std::min)(n, (c + 1) * chunk); ++r)
       {
-        below[c] += std::size_t(less(values[i], low));
-        inside[c] += std::size_t(within(values[i]));
+        const T v = value(r);
+        if (less(v, low))
+          ++count;
+        else if (!less(high, v))
+          within_in[c].push_back(v);
       }
+      below_in[c] = count;
     },
     [](std::size_t) { return true; });
-  std::size_t below_count = 0, inside_count = 0;
+  below = 0;
+  std::vector<T> within;
   for (std::size_t c = 0; c < chunks; ++c)
   {
-    below_count += below[c];
-    // each chunk's first place in the bracket's values
-    inside_count += std::exchange(inside[c], inside_count);
+    below += below_in[c];
+    within.insert(within.end(), within_in[c].begin(), within_in[c].end());
+    std::vector<T>().swap(within_in[c]);
   }
-  if (count <= below_count || count > below_count + inside_count)
-    return select_among(values, count);
-  std::vector<T> bracket(inside_count);
-  for_each_index<ConcurrencyTag>(
-    chunks,
-    [&](std::size_t c) {
-      std::size_t place = inside[c];
-      for (std::size_t i = c * chunk; i < (std::min)(n, (c + 1) * chunk); ++i)
-        if (within(values[i]))
-          bracket[place++] = values[i];
-    },
-    [](std::size_t) { return true; });
-  return select_among(std::move(bracket), count - below_count);
+  return within;
+}
+
+// The `count`-th smallest (from 1) of the `n` values `value(r)`, r in
+// [0, n), by `less`, which must be a total order for the result not to
+// depend on the tag. Its passes over all values run in parallel with
+// CGAL::Parallel_tag, and it holds only a few hundredths of them: those
+// within a sample's bracket (see sampled_bracket), unless it missed, when
+// it holds all of them.
+template <typename ConcurrencyTag, typename Value, typename Less>
+auto nth_smallest(std::size_t n, const Value& value, std::size_t count, const Less& less)
+{
+  CGAL_precondition(count >= 1 && count <= n);
+  using T = std::decay_t<decltype(value(std::size_t(0)))>;
+  const std::pair<T, T> bracket = sampled_bracket(n, value, count, less);
+  std::size_t below = 0;
+  std::vector<T> within = values_within<ConcurrencyTag>(n, value, bracket.first, bracket.second, less, below);
+  if (count <= below || count > below + within.size())
+  {
+    within.resize(n);
+    for_each_index<ConcurrencyTag>(n, [&](std::size_t r) { within[r] = value(r); }, [](std::size_t) { return true; });
+    below = 0;
+  }
+  std::nth_element(within.begin(), within.begin() + std::ptrdiff_t(count - below - 1), within.end(), less);
+  return within[count - below - 1];
 }
 
 } // namespace internal

@@ -189,9 +189,9 @@ std::optional<Array<Index> > run_default_mode(Engine& engine, const Indexed_poin
   Engine_run run = run_engine<ConcurrencyTag>(engine, indexed.size(), target, callback);
   if (!run.initialized)
     return std::nullopt;
-  Array<Index> site = engine.take_nearest_present(); // each point's nearest kept point, when known
+  Array<Index> site; // each point's nearest kept point, when the relocation found them
   if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale, std::move(site));
+    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale, engine.take_nearest_present());
   if (through &&
       !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
     return std::nullopt;
