@@ -529,8 +529,7 @@ private:
   Array<Index> m_listed;
   // the cells of a ranking's level boundaries, while it runs down to its level
   std::optional<Level_cells> m_level_cells;
-  // the blocks of indices whose keys are read in parallel, and the stride
-  // of the sample that bounds a threshold
+  // the blocks of indices whose keys are read in parallel
   static constexpr std::size_t key_block = std::size_t(1) << 14;
   // CSR offsets of each point's neighbours: 64-bit, as dense clouds can hold
   // more than 2^32 pairs within reach
