@@ -80,9 +80,10 @@ bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index
   });
 }
 
-// The searches of the coverage elimination against the scans, `members`
-// being the tree's points that are not removed: the first one to four
-// points, and whether a point comes before another, that other being one
+// The searches of the coverage elimination and of the relocation against
+// the scans, `members` being the tree's points that are not removed: the
+// first one to four points, the first one from a bound, and whether a point
+// comes before another, that other being one
 // of the four points of the cloud nearest the query (on the lattice, many
 // tie with the tree's points by distance, and only the input position
 // decides) or a point anywhere.
@@ -110,6 +111,12 @@ void require_few_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Poi
                                 other };
       REQUIRE(tree.holds_nearer(q, than) == scan_holds_nearer(p, members, q, than));
     }
+    // bounded from the start by a point of the tree, near or far, the
+    // search for one point finds the first
+    others.push_back(members[(q * 7919u) % members.size()]);
+    for (ESI::Index seed : others)
+      if (seed != q && std::find(members.begin(), members.end(), seed) != members.end())
+        REQUIRE(tree.nearest_before(q, seed) == scan_nearest(p, members, q, 1).front());
   }
 }
 

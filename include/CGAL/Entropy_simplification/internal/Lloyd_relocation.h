@@ -12,6 +12,7 @@
 #include <CGAL/Entropy_simplification/internal/Coverage_swaps.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Nearest_present_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
@@ -38,25 +39,6 @@ struct Voronoi_cells
   Array<Index> sites;    // the present points, by index
   Array<Index> site_of;  // for each point, the rank of its site in `sites`
 };
-
-// For each point, the present point nearest it (ties by input position):
-// itself when present. At least one point must be present.
-template <typename ConcurrencyTag>
-Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present)
-{
-  if (std::find(present.begin(), present.end(), 0) == present.end())
-    return all_indices(points.size());
-  Array<Index> sites;
-  for (Index i = 0; i < Index(points.size()); ++i)
-    if (present[i])
-      sites.push_back(i);
-  const Point_tree tree(points, sites.begin(), sites.end(), ConcurrencyTag());
-  Array<Index> nearest(points.size());
-  for_each_index<ConcurrencyTag>(
-    points.size(), [&](std::size_t i) { nearest[i] = present[i] ? Index(i) : tree.nearest_one(Index(i)); },
-    [](std::size_t) { return true; });
-  return nearest;
-}
 
 // The cells from `nearest`, each point's nearest present point (see
 // nearest_present_points), whose memory they take.
@@ -184,11 +166,11 @@ double greatest_squared_radius_about_centroids(const Indexed_points& points, con
   return squared_radius.empty() ? 0. : *std::max_element(squared_radius.begin(), squared_radius.end());
 }
 
-// The median of each cell, as the new present points; with the `terms`
-// medians or radius_bound switched off, the member nearest the centroid, or
-// the median whatever its radius.
+// The median of each cell, by the rank of its site, as the new present
+// points; with the `terms` medians or radius_bound switched off, the member
+// nearest the centroid, or the median whatever its radius.
 template <typename ConcurrencyTag>
-Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cells, const Default_mode_terms& terms)
+Array<Index> cell_medians(const Indexed_points& points, const Voronoi_cells& cells, const Default_mode_terms& terms)
 {
   const Cell_members cell = members_by_cell<ConcurrencyTag>(points, cells);
   // the member nearest the centroid needs no bound
@@ -206,10 +188,7 @@ Array<char> cell_medians(const Indexed_points& points, const Voronoi_cells& cell
                                 : cell_median<1>(points, first, beyond, squared_bound);
     },
     [](std::size_t) { return true; });
-  Array<char> present(points.size(), 0);
-  for (Index i : chosen)
-    present[i] = 1;
-  return present;
+  return chosen;
 }
 
 // What a relocation changed: the pairs (point no longer present, point
@@ -229,17 +208,28 @@ struct Relocation
 // it is empty (see nearest_present_points); then, with
 // `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count), each
 // point's crowding measured against its `scale`. The count does not change.
+// After the first time, each point's search for its nearest present point
+// starts bounded by the median of its cell.
 template <typename ConcurrencyTag>
 Relocation relocate_within_input(const Indexed_points& points, Array<char>& present, int iterations,
                                  const Default_mode_terms& terms, const Array<double>& scale, Array<Index> nearest)
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
+  Array<Index> median_of_cell; // of each point's cell, once relocated
   for (int iteration = 0; iteration < iterations; ++iteration)
   {
     if (iteration > 0 || nearest.empty())
-      nearest = nearest_present_points<ConcurrencyTag>(points, present);
-    present = cell_medians<ConcurrencyTag>(points, voronoi_cells<ConcurrencyTag>(present, std::move(nearest)), terms);
+      nearest = nearest_present_points<ConcurrencyTag>(points, present, median_of_cell);
+    Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(present, std::move(nearest));
+    const Array<Index> medians = cell_medians<ConcurrencyTag>(points, cells, terms);
+    present.assign(points.size(), 0);
+    for (Index m : medians)
+      present[m] = 1;
+    median_of_cell = std::move(cells.site_of);
+    for_each_index<ConcurrencyTag>(
+      points.size(), [&](std::size_t i) { median_of_cell[i] = medians[median_of_cell[i]]; },
+      [](std::size_t) { return true; });
   }
   Array<Index>().swap(nearest); // unused without iterations, not to be held through the swaps
   Relocation relocation;
@@ -247,7 +237,8 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
   {
     const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), char(1)));
     relocation.site =
-      swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale);
+      swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale,
+                                                median_of_cell);
   }
 
   Array<Index> gone, come;

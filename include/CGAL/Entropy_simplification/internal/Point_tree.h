@@ -114,13 +114,17 @@ public:
   // Whether the tree holds a point other than `q` that comes before `than`
   // in the neighbour order of `q`. The search starts bounded by `than`, so
   // that it visits only the leaves near `q`.
-  bool holds_nearer(Index q, const Neighbor& than) const
+  bool holds_nearer(Index q, const Neighbor& than) const { return first_before(q, than) < than; }
+
+  // The first point of the tree other than `q` in the neighbour order of
+  // `q`, as nearest_one() finds it, when it comes before the point `than`,
+  // or `than` otherwise. The search starts bounded by `than`, as in
+  // holds_nearer.
+  Index nearest_before(Index q, Index than) const
   {
-    Best_one one;
-    one.best = than;
-    if (!m_order.empty())
-      search_nearest(q, one);
-    return one.best < than;
+    return first_before(q, Neighbor{ squared_distance(m_points.points[q], m_points.points[than]),
+                                     m_points.input_position[than], than })
+      .id;
   }
 
   // Records the largest of `scales` in each node, for `within_reach_of_leaf`.
@@ -259,6 +263,17 @@ private:
   }
 
   bool is_removed(Index i) const { return !m_removed.empty() && m_removed[i]; }
+
+  // The first point of the tree other than `q` in the neighbour order of
+  // `q`, if it comes before `than`, or `than`.
+  Neighbor first_before(Index q, const Neighbor& than) const
+  {
+    Best_one one;
+    one.best = than;
+    if (!m_order.empty())
+      search_nearest(q, one);
+    return one.best;
+  }
 
   static double squared_distance_to_box(const Working_point& q, const Node& node)
   {
