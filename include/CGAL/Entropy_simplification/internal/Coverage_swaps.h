@@ -527,7 +527,7 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 // 215 to 232 for the 11 boundaries below).
 template <typename ConcurrencyTag>
 Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
-                                       const Array<double>& scale, const Array<Index>& hint = Array<Index>())
+                                       const Array<double>& scale, Array<Index> hint = Array<Index>())
 {
   Array<Index> sites;
   for (Index i = 0; i < Index(points.size()); ++i)
@@ -538,6 +538,7 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
   if (sites.empty())
     return Array<Index>(points.size(), none_index);
   Array<Index> site = nearest_present_points<ConcurrencyTag>(points, present, hint);
+  Array<Index>().swap(hint); // not to be held through the swaps
   if (sites.size() < 2 || swaps == 0)
     return site;
   // the present points' own tree serves the crowding, and goes

@@ -221,6 +221,7 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
   {
     if (iteration > 0 || nearest.empty())
       nearest = nearest_present_points<ConcurrencyTag>(points, present, median_of_cell);
+    Array<Index>().swap(median_of_cell); // not to be held while the cells are
     Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(present, std::move(nearest));
     const Array<Index> medians = cell_medians<ConcurrencyTag>(points, cells, terms);
     present.assign(points.size(), 0);
@@ -238,7 +239,7 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
     const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), char(1)));
     relocation.site =
       swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale,
-                                                median_of_cell);
+                                                std::move(median_of_cell));
   }
 
   Array<Index> gone, come;
