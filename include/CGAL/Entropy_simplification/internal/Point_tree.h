@@ -58,11 +58,12 @@ class Point_tree
   static constexpr std::size_t parallel_build_size = std::size_t(1) << 16;
 
   // A node holds m_order[first, beyond); an inner node's children are
-  // m_nodes[child] and m_nodes[child + 1], a leaf has child 0.
+  // m_nodes[child] and m_nodes[child + 1], the second holding the indices
+  // from `split` on; a leaf has child 0.
   struct Node
   {
     double low[3], high[3];
-    Index first, beyond, child;
+    Index first, beyond, child, split;
   };
 
 public:
@@ -213,6 +214,7 @@ private:
       {
         const Index child = Index(m_nodes.size());
         m_nodes[node].child = child;
+        m_nodes[node].split = Index(half);
         m_nodes.resize(m_nodes.size() + 2);
         lay_out(child, first, middle, low, half);
         lay_out(child + 1, middle, beyond, half, high);
@@ -329,14 +331,40 @@ private:
     }
   };
 
-  // Depth first, the child whose box is nearer `q` first; the farther one
-  // waits, and is skipped if its box is then farther than the bound. The
-  // search is a loop rather than a recursion, which costs a call per level.
+  // From the leaf whose indices surround `q`, which holds its nearest
+  // points of the kd order, up to the root, searching on the way the other
+  // child of each node of the path unless its box is farther than the
+  // bound. The path is found by index: the boxes of its nodes, which hold
+  // `q` or nearly, need not be measured.
   template <typename Best>
   void search_nearest(Index q, Best& best) const
   {
     // each split halves an interval of indices, so no path is longer than
-    // 32 nodes, and at most one child per node of the path waits
+    // 32 nodes
+    Index path[64];
+    std::size_t depth = 0;
+    Index n = 0;
+    for (; m_nodes[n].child != 0; n = m_nodes[n].child + Index(q >= m_nodes[n].split))
+      path[depth++] = n;
+    search_subtree(n, q, best);
+    const Working_point& center = m_points.points[q];
+    while (depth > 0)
+    {
+      const Node& node = m_nodes[path[--depth]];
+      const Index other = node.child + Index(q < node.split);
+      if (squared_distance_to_box(center, m_nodes[other]) <= best.bound())
+        search_subtree(other, q, best);
+    }
+  }
+
+  // The search of the subtree of node `n`, depth first, the child whose box
+  // is nearer `q` first; the farther one waits, and is skipped if its box is
+  // then farther than the bound. The search is a loop rather than a
+  // recursion, which costs a call per level.
+  template <typename Best>
+  void search_subtree(Index n, Index q, Best& best) const
+  {
+    // at most one child per node of a path waits
     struct Waiting
     {
       Index node;
@@ -345,7 +373,6 @@ private:
     Waiting waiting[64];
     std::size_t waiting_count = 0;
     const Working_point& center = m_points.points[q];
-    Index n = 0;
     for (;;)
     {
       const Node& node = m_nodes[n];
