@@ -86,13 +86,14 @@ bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index
 // comes before another, that other being one
 // of the four points of the cloud nearest the query (on the lattice, many
 // tie with the tree's points by distance, and only the input position
-// decides) or a point anywhere.
+// decides) or a point anywhere. The queries step by 2 over a tree of every
+// third point, so that they come from the tree and from outside it alike.
 void require_few_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Point_tree& tree,
                                     const ESI::Array<ESI::Index>& members)
 {
   ESI::Array<ESI::Index> everyone(p.size());
   std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
-  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 3)
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 2)
   {
     for (std::size_t count = 1; count <= 4; ++count)
     {

@@ -331,11 +331,13 @@ private:
     }
   };
 
-  // From the leaf whose indices surround `q`, which holds its nearest
-  // points of the kd order, up to the root, searching on the way the other
-  // child of each node of the path unless its box is farther than the
-  // bound. The path is found by index: the boxes of its nodes, which hold
-  // `q` or nearly, need not be measured.
+  // From the leaf whose interval of indices holds `q` (or the nearest by
+  // index), near `q` on points in kd order, up to the root, searching on the
+  // way the other child of each node of the path unless its box is farther
+  // than the bound. Every node off the path lies under one of those other
+  // children, so the search is exact whichever leaf the path reaches; found
+  // by index, the path needs none of its boxes measured, and on points in
+  // kd order they hold `q` or nearly.
   template <typename Best>
   void search_nearest(Index q, Best& best) const
   {
@@ -478,7 +480,7 @@ private:
     const double node_reach = widened(radius * (scale + m_largest_scale[n]));
     if (squared_distance_to_box(center, node) > node_reach * node_reach)
       return;
-    // as in search_nearest, the points within reach are sorted out without a
+    // as in search_subtree, the points within reach are sorted out without a
     // branch
     for (std::size_t first = node.first; first < node.beyond; first += chunk_size)
     {
