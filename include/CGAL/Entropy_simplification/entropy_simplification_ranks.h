@@ -125,8 +125,8 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    0.1%, where the kept points stand for the input points, up to 1.081 and
    1.105 times. With a level, the prefixes longer than `L` are not
    relocated, and are up to 1.085 times worse. The whole order costs 1.29
-   to 1.35 times a direct call to 1% of the points without a level, and
-   1.07 to 1.13 times with the level at 1% (medians on 100,000 and
+   to 1.36 times a direct call to 1% of the points without a level, and
+   1.08 to 1.15 times with the level at 1% (medians on 100,000 and
    1,000,000 points, with one thread and with two).
 
    Coincident points are ranked last: their first copy in input order takes
