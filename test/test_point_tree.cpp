@@ -4,7 +4,9 @@
 // coverage elimination's searches (the first one to four, whether one is
 // nearer). The clouds hold thousands of points, so that the tree has many
 // levels, and points on an integer lattice, so that many distances tie.
-// And the kd order the tree follows against the independent reference's.
+// And the kd order the tree follows against the independent reference's,
+// and the searches answered from each point's first neighbours (offsets)
+// against the scan.
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +15,7 @@
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
 #include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
 #include <algorithm>
@@ -413,4 +416,115 @@ TEST_CASE("Point tree: the decremental neighbours of a large k, part after part"
     return false;
   }));
   CHECK(calls == 1);
+}
+
+// The coverage elimination answers its searches from each point's first
+// neighbours when they hold enough present points: on the test points in
+// kd order, where most offsets fit in a byte, and as they are, where most
+// do not, for sets of present points from all to 30, the answers are the
+// scan's, and a search is declined exactly when the neighbours before the
+// first offset that does not fit hold too few present points. The table is
+// the scan's, so that nothing of the tree is involved.
+TEST_CASE("Neighbor offsets: the present points among the first neighbours are the nearest present points", "[point tree]")
+{
+  const ESI::Indexed_points unsorted = test_points();
+  const ESI::Indexed_points sorted = ESI::sort_spatially(unsorted.points);
+  constexpr unsigned int k = 10;
+  for (const ESI::Indexed_points* p : { &sorted, &unsorted })
+  {
+    const std::size_t n = p->size();
+    ESI::Array<ESI::Index> everyone(n);
+    std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
+    ESI::Array<ESI::Index> knn;
+    for (ESI::Index q = 0; q < ESI::Index(n); ++q)
+    {
+      const ESI::Array<ESI::Index> row = scan_nearest(*p, everyone, q, k);
+      knn.insert(knn.end(), row.begin(), row.end());
+    }
+    const ESI::Neighbor_offsets offsets(knn, k);
+    ESI::Portable_random random(31);
+    std::size_t answered = 0, declined = 0, answered_of_all = 0;
+    for (std::size_t kept : { n, n / 2, n / 10, std::size_t(30) })
+    {
+      ESI::Array<char> present(n, 0);
+      ESI::Array<ESI::Index> members = everyone;
+      for (std::size_t i = n; i-- > 1;)
+        std::swap(members[i], members[random.below(i + 1)]);
+      members.resize(kept);
+      std::sort(members.begin(), members.end());
+      for (ESI::Index i : members)
+        present[i] = 1;
+      const auto is_present = [&](ESI::Index i) { return present[i] != 0; };
+      for (ESI::Index q = 0; q < ESI::Index(n); ++q)
+        for (std::size_t count = 1; count <= 4; ++count)
+        {
+          ESI::Index first[4];
+          std::size_t present_in_prefix = 0;
+          for (std::size_t j = 0; j < k; ++j)
+          {
+            const long long offset = (long long)(knn[q * k + j]) - (long long)(q);
+            if (offset < -127 || offset > 127)
+              break;
+            present_in_prefix += present[knn[q * k + j]];
+          }
+          if (offsets.first_present(q, count, is_present, first))
+          {
+            ++answered;
+            answered_of_all += kept == n;
+            REQUIRE(ESI::Array<ESI::Index>(first, first + count) == scan_nearest(*p, members, q, count));
+          }
+          else
+          {
+            ++declined;
+            REQUIRE(present_in_prefix < count);
+          }
+        }
+    }
+    // both ways are taken, and with every point present, on points in kd
+    // order, the first in most searches (83%)
+    CHECK(answered > 0);
+    CHECK(declined > 0);
+    if (p == &sorted)
+      CHECK(answered_of_all > 3 * n); // of 4 n
+  }
+}
+
+// The offsets of one byte end at 127 either way, -128 marking the first
+// that does not fit: points on a line, far apart, but for point 0, whose
+// nearest are points 127 and 128, and point 255, whose nearest is 127.
+TEST_CASE("Neighbor offsets: the offsets that fit in a byte, and the first that does not", "[point tree]")
+{
+  ESI::Indexed_points p;
+  for (std::size_t i = 0; i < 300; ++i)
+  {
+    p.points.emplace_back(10. * double(i) + 1000., 0., 0.);
+    p.input_position.push_back(ESI::Index(i));
+  }
+  p.points[0] = ESI::Working_point(0., 0., 0.);
+  p.points[127] = ESI::Working_point(1., 0., 0.);
+  p.points[128] = ESI::Working_point(-2., 0., 0.);
+  p.points[255] = ESI::Working_point(1.5, 0., 0.);
+  ESI::Array<ESI::Index> everyone(p.size());
+  std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
+  constexpr unsigned int k = 3;
+  ESI::Array<ESI::Index> knn;
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
+  {
+    const ESI::Array<ESI::Index> row = scan_nearest(p, everyone, q, k);
+    knn.insert(knn.end(), row.begin(), row.end());
+  }
+  REQUIRE(ESI::Array<ESI::Index>(knn.begin(), knn.begin() + 3) == ESI::Array<ESI::Index>{ 127, 255, 128 });
+  REQUIRE(knn[255 * k] == 127);
+  const ESI::Neighbor_offsets offsets(knn, k);
+  const auto all = [](ESI::Index) { return true; };
+  ESI::Index first[3];
+  REQUIRE(offsets.first_present(0, 1, all, first));
+  CHECK(first[0] == 127);
+  CHECK_FALSE(offsets.first_present(0, 2, all, first)); // 255 is 255 ahead
+  CHECK_FALSE(offsets.first_present(255, 1, all, first)); // 127 is 128 behind
+  // an ordinary point of the line: its next two
+  REQUIRE(offsets.first_present(1, 2, all, first));
+  CHECK(first[0] == 2);
+  CHECK(first[1] == 3);
+  CHECK_FALSE(ESI::Neighbor_offsets().first_present(1, 1, all, first));
 }

@@ -70,9 +70,9 @@ protected:
   Array<char> m_present;
   std::size_t m_count;
   // the first neighbours of each point, which initialize() kept for an
-  // elimination that starts with every point present, empty once it used them
+  // elimination that starts with every point present, empty once it took them
   const std::size_t m_first_neighbors_kept;
-  Array<Index> m_first_neighbors;
+  First_neighbors m_first_neighbors;
   Array<Index> m_nearest_present; // see take_nearest_present
 };
 

@@ -13,6 +13,7 @@
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -259,30 +260,37 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
   return true;
 }
 
-// The first `count` of the k nearest neighbours `knn` of each point, those
-// of point i at [i * count]; none when count is 0 or above k.
-inline Array<Index> first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
+// What an elimination keeps of the k nearest neighbours of each point: the
+// first `count`, those of point i at columns[i * count], and all k as
+// offsets (see Neighbor_offsets); none when count is 0 or above k.
+struct First_neighbors
+{
+  Array<Index> columns;
+  Neighbor_offsets offsets;
+};
+
+inline First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
 {
   if (count == 0 || count > k)
     return {};
   const std::size_t n = knn.size() / k;
-  Array<Index> first(n * count);
+  First_neighbors first{ Array<Index>(n * count), Neighbor_offsets(knn, k) };
   for (std::size_t i = 0; i < n; ++i)
-    std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.begin() + std::ptrdiff_t(i * count));
+    std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.columns.begin() + std::ptrdiff_t(i * count));
   return first;
 }
 
 // The field from `knn`, the k nearest neighbours of each point nearest first
 // (those of point i at knn[i * k]), which it frees once used, keeping to
-// `first` the first `first_count` of each point's (see first_neighbors),
-// once the normals it estimated on the way are freed too: the feature
+// `first` what an elimination that follows `first_count` of each point's
+// uses of them (see first_neighbors), once the normals it estimated on the way are freed too: the feature
 // strengths and the areas the points sample make the scales, with the
 // `terms` switched on. The entropies count for 60% of the progress, the
 // coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
                                const Default_mode_terms& terms, Array<Index> knn, std::size_t first_count,
-                               Array<Index>& first, Elimination_field& field, const Progress& progress)
+                               First_neighbors& first, Elimination_field& field, const Progress& progress)
 {
   Array<double> entropy;
   if (!normal_entropy_of_all<ConcurrencyTag>(points, k, options.normal_estimation, knn, entropy,
