@@ -15,6 +15,7 @@
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
 #include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
+#include <CGAL/Entropy_simplification/internal/Nearest_present_points.h>
 #include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
@@ -423,8 +424,9 @@ TEST_CASE("Point tree: the decremental neighbours of a large k, part after part"
 // kd order, where most offsets fit in a byte, and as they are, where most
 // do not, for sets of present points from all to 30, the answers are the
 // scan's, and a search is declined exactly when the neighbours before the
-// first offset that does not fit hold too few present points. The table is
-// the scan's, so that nothing of the tree is involved.
+// first offset that does not fit hold too few present points; and so are
+// the nearest present points that the relocation searches. The table is
+// the scan's, not the tree's.
 TEST_CASE("Neighbor offsets: the present points among the first neighbours are the nearest present points", "[point tree]")
 {
   const ESI::Indexed_points unsorted = test_points();
@@ -479,6 +481,12 @@ TEST_CASE("Neighbor offsets: the present points among the first neighbours are t
             REQUIRE(present_in_prefix < count);
           }
         }
+      // the relocation's search for the nearest present point, which they
+      // answer first
+      const ESI::Array<ESI::Index> nearest = ESI::nearest_present_points<CGAL::Sequential_tag>(
+        *p, present, ESI::Array<ESI::Index>(), offsets);
+      for (ESI::Index q = 0; q < ESI::Index(n); ++q)
+        REQUIRE(nearest[q] == (present[q] ? q : scan_nearest(*p, members, q, 1).front()));
     }
     // both ways are taken, and with every point present, on points in kd
     // order, the first in most searches (83%)
@@ -491,7 +499,8 @@ TEST_CASE("Neighbor offsets: the present points among the first neighbours are t
 
 // The offsets of one byte end at 127 either way, -128 marking the first
 // that does not fit: points on a line, far apart, but for point 0, whose
-// nearest are points 127 and 128, and point 255, whose nearest is 127.
+// nearest are points 127 and 128, and point 255, whose nearest is 127. And
+// at most 16 neighbours are kept.
 TEST_CASE("Neighbor offsets: the offsets that fit in a byte, and the first that does not", "[point tree]")
 {
   ESI::Indexed_points p;
@@ -527,4 +536,19 @@ TEST_CASE("Neighbor offsets: the offsets that fit in a byte, and the first that 
   CHECK(first[0] == 2);
   CHECK(first[1] == 3);
   CHECK_FALSE(ESI::Neighbor_offsets().first_present(1, 1, all, first));
+  // of k = 20 neighbours, the first 16 are kept: those of point 150 go
+  // 149, 151, 148, 152, ... out to 158, the 16th, then 141
+  constexpr unsigned int wide = 20;
+  ESI::Array<ESI::Index> wide_knn;
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
+  {
+    const ESI::Array<ESI::Index> row = scan_nearest(p, everyone, q, wide);
+    wide_knn.insert(wide_knn.end(), row.begin(), row.end());
+  }
+  REQUIRE(wide_knn[150 * wide + 15] == 158);
+  REQUIRE(wide_knn[150 * wide + 16] == 141);
+  const ESI::Neighbor_offsets sixteen(wide_knn, wide);
+  REQUIRE(sixteen.first_present(150, 1, [](ESI::Index i) { return i == 158; }, first));
+  CHECK(first[0] == 158);
+  CHECK_FALSE(sixteen.first_present(150, 1, [](ESI::Index i) { return i == 141; }, first));
 }

@@ -16,7 +16,6 @@
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Level_cells.h>
-#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -123,8 +122,7 @@ public:
     const bool relocates_levels = std::exchange(m_relocates_levels, false);
     if (m_count <= target)
     {
-      First_neighbors().columns.swap(m_first_neighbors.columns); // not to be held while the caller goes on
-      m_first_neighbors.offsets = Neighbor_offsets();
+      m_first_neighbors = First_neighbors(); // not to be held while the caller goes on
       return true;
     }
     follow_present<ConcurrencyTag>();
@@ -180,7 +178,6 @@ private:
     Array<double>().swap(m_spread);
     m_level_cells.reset();
     m_tree.reset();
-    m_neighbor_offsets = Neighbor_offsets();
     Array<Index>().swap(m_listed);
     Array<double>().swap(m_weight);
     Array<Index>().swap(m_nearest);
@@ -202,13 +199,12 @@ private:
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);
     list_present();
     build_tree<ConcurrencyTag>();
-    First_neighbors first_neighbors = std::exchange(m_first_neighbors, First_neighbors());
-    m_neighbor_offsets = std::move(first_neighbors.offsets);
-    if (m_count == n && first_neighbors.columns.size() == n * following)
+    Array<Index> first_neighbors = std::move(m_first_neighbors.columns);
+    if (m_count == n && first_neighbors.size() == n * following)
     {
       // each point is its own nearest, and its first neighbours follow it,
       // as the search would find them
-      m_following = std::move(first_neighbors.columns);
+      m_following = std::move(first_neighbors);
       for_each_follower<ConcurrencyTag>([&](Index i) {
         m_nearest[i] = i;
         m_cost[i].fetch_add(share(i), std::memory_order_relaxed);
@@ -216,7 +212,7 @@ private:
     }
     else
     {
-      Array<Index>().swap(first_neighbors.columns);
+      Array<Index>().swap(first_neighbors);
       m_following.assign(n * following, none_index);
       for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
     }
@@ -359,8 +355,7 @@ private:
 
   // Follows `i`'s nearest and next present points, and the spares after
   // them, searched anew among at least two: among its first neighbours
-  // when they hold them, as about a third of the searches of an elimination
-  // to 10% find them there, and in the tree otherwise.
+  // when they hold them (see Neighbor_offsets), and in the tree otherwise.
   void follow_anew(Index i)
   {
     CGAL_precondition(m_count >= 2);
@@ -368,7 +363,8 @@ private:
     const std::size_t itself = is_present(i) ? 1 : 0;
     listed[0] = i;
     const std::size_t others = 1 + following - itself;
-    if (!m_neighbor_offsets.first_present(i, others, [this](Index p) { return is_present(p); }, listed + itself))
+    if (!m_first_neighbors.offsets.first_present(i, others, [this](Index p) { return is_present(p); },
+                                                 listed + itself))
     {
       Neighbor found[1 + following];
       const std::size_t count = m_tree->nearest(i, others, found);
@@ -519,8 +515,6 @@ private:
   // a tree of the present points, from which the removed ones are left out
   // until it holds twice as many as are present, when it is built again
   std::optional<Point_tree> m_tree;
-  // each point's first neighbours, which answer most searches early on
-  Neighbor_offsets m_neighbor_offsets;
   // the points the tree was built with, removed ones included
   std::size_t m_tree_size = 0;
   // whether a ranking's level boundaries are relocated, and their cells

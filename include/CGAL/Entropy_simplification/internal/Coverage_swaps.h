@@ -11,6 +11,7 @@
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Nearest_present_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -518,7 +519,7 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 
 // The coverage swaps of a direct call (see swap_in_turn), among all the
 // points, each point's nearest present point searched first from `hint`
-// (see nearest_present_points). Returns each point's nearest present point
+// and `offsets` (see nearest_present_points). Returns each point's nearest present point
 // after the swaps (ties by input position): itself when present, none when
 // no point is. The
 // levels of detail below a ranking's level start from them: searched anew,
@@ -527,7 +528,8 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 // 215 to 232 for the 11 boundaries below).
 template <typename ConcurrencyTag>
 Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>& present, std::size_t swaps,
-                                       const Array<double>& scale, Array<Index> hint = Array<Index>())
+                                       const Array<double>& scale, Array<Index> hint = Array<Index>(),
+                                       const Neighbor_offsets& offsets = Neighbor_offsets())
 {
   Array<Index> sites;
   for (Index i = 0; i < Index(points.size()); ++i)
@@ -537,7 +539,7 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
     return sites;
   if (sites.empty())
     return Array<Index>(points.size(), none_index);
-  Array<Index> site = nearest_present_points<ConcurrencyTag>(points, present, hint);
+  Array<Index> site = nearest_present_points<ConcurrencyTag>(points, present, hint, offsets);
   Array<Index>().swap(hint); // not to be held through the swaps
   if (sites.size() < 2 || swaps == 0)
     return site;

@@ -12,6 +12,7 @@
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 
 #include <cstddef>
 #include <utility>
@@ -52,6 +53,10 @@ public:
   // for every point, or nothing; taken once. Those of a run the callback
   // stopped include the removals of its last round that it did not report.
   Array<Index> take_nearest_present() { return std::move(m_nearest_present); }
+  // The offsets of each point's first neighbours (see Neighbor_offsets),
+  // kept through the runs for the searches of the relocation, when
+  // initialize() kept any; taken once.
+  Neighbor_offsets take_neighbor_offsets() { return std::move(m_first_neighbors.offsets); }
 
 protected:
   // `first_neighbors_kept`: how many of each point's nearest neighbours
@@ -70,7 +75,8 @@ protected:
   Array<char> m_present;
   std::size_t m_count;
   // the first neighbours of each point, which initialize() kept for an
-  // elimination that starts with every point present, empty once it took them
+  // elimination that starts with every point present: its columns, empty
+  // once it took them, and their offsets, which serve any present points
   const std::size_t m_first_neighbors_kept;
   First_neighbors m_first_neighbors;
   Array<Index> m_nearest_present; // see take_nearest_present

@@ -261,8 +261,9 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
 }
 
 // What an elimination keeps of the k nearest neighbours of each point: the
-// first `count`, those of point i at columns[i * count], and all k as
-// offsets (see Neighbor_offsets); none when count is 0 or above k.
+// first `count`, those of point i at columns[i * count], and the first
+// neighbours as offsets (see Neighbor_offsets); none when count is 0 or
+// above k.
 struct First_neighbors
 {
   Array<Index> columns;
@@ -282,10 +283,10 @@ inline First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, 
 
 // The field from `knn`, the k nearest neighbours of each point nearest first
 // (those of point i at knn[i * k]), which it frees once used, keeping to
-// `first` what an elimination that follows `first_count` of each point's
-// uses of them (see first_neighbors), once the normals it estimated on the way are freed too: the feature
-// strengths and the areas the points sample make the scales, with the
-// `terms` switched on. The entropies count for 60% of the progress, the
+// `first` what an elimination that follows `first_count` neighbours of
+// each point needs of them (see first_neighbors), once the normals it
+// estimated on the way are freed too: the feature strengths and the areas
+// the points sample make the scales, with the `terms` switched on. The entropies count for 60% of the progress, the
 // coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,

@@ -13,6 +13,7 @@
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Nearest_present_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
@@ -209,10 +210,11 @@ struct Relocation
 // `terms.coverage_swaps`, the coverage swaps (see coverage_swap_count), each
 // point's crowding measured against its `scale`. The count does not change.
 // After the first time, each point's search for its nearest present point
-// starts bounded by the median of its cell.
+// starts bounded by the median of its cell, when `offsets` do not answer it.
 template <typename ConcurrencyTag>
 Relocation relocate_within_input(const Indexed_points& points, Array<char>& present, int iterations,
-                                 const Default_mode_terms& terms, const Array<double>& scale, Array<Index> nearest)
+                                 const Default_mode_terms& terms, const Array<double>& scale, Array<Index> nearest,
+                                 const Neighbor_offsets& offsets = Neighbor_offsets())
 {
   const Array<char> before = present;
   const Array<Index> by_input = indices_by_input_position(points);
@@ -220,7 +222,7 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
   for (int iteration = 0; iteration < iterations; ++iteration)
   {
     if (iteration > 0 || nearest.empty())
-      nearest = nearest_present_points<ConcurrencyTag>(points, present, median_of_cell);
+      nearest = nearest_present_points<ConcurrencyTag>(points, present, median_of_cell, offsets);
     Array<Index>().swap(median_of_cell); // not to be held while the cells are
     Voronoi_cells cells = voronoi_cells<ConcurrencyTag>(present, std::move(nearest));
     const Array<Index> medians = cell_medians<ConcurrencyTag>(points, cells, terms);
@@ -239,7 +241,7 @@ Relocation relocate_within_input(const Indexed_points& points, Array<char>& pres
     const std::size_t kept = std::size_t(std::count(present.begin(), present.end(), char(1)));
     relocation.site =
       swap_farthest_for_crowded<ConcurrencyTag>(points, present, coverage_swap_count(kept, points.size()), scale,
-                                                std::move(median_of_cell));
+                                                std::move(median_of_cell), offsets);
   }
 
   Array<Index> gone, come;

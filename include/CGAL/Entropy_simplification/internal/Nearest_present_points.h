@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -23,13 +24,15 @@ namespace Entropy_simplification {
 namespace internal {
 
 // For each point, the present point nearest it (ties by input position):
-// itself when present. At least one point must be present. `hint`, unless
-// empty, gives each point a present point, such as the median that took
-// the place of its nearest, from which its search starts bounded, so that
-// it visits only the leaves near the point.
+// itself when present. At least one point must be present. The first
+// neighbours of `offsets`, unless empty, answer the searches they hold a
+// present point for (see Neighbor_offsets). `hint`, unless empty, gives each point a present point, such as
+// the median that took the place of its nearest, from which its search
+// starts bounded, so that it visits only the leaves near the point.
 template <typename ConcurrencyTag>
 Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present,
-                                    const Array<Index>& hint = Array<Index>())
+                                    const Array<Index>& hint = Array<Index>(),
+                                    const Neighbor_offsets& offsets = Neighbor_offsets())
 {
   CGAL_precondition(hint.empty() || hint.size() == points.size());
   if (std::find(present.begin(), present.end(), 0) == present.end())
@@ -45,12 +48,10 @@ Array<Index> nearest_present_points(const Indexed_points& points, const Array<ch
     [&](std::size_t i) {
       if (present[i])
         nearest[i] = Index(i);
-      else if (hint.empty())
-        nearest[i] = tree.nearest_one(Index(i));
-      else
+      else if (!offsets.first_present(Index(i), 1, [&](Index p) { return present[p] != 0; }, &nearest[i]))
       {
-        CGAL_assertion(present[hint[i]]);
-        nearest[i] = tree.nearest_before(Index(i), hint[i]);
+        CGAL_assertion(hint.empty() || present[hint[i]]);
+        nearest[i] = hint.empty() ? tree.nearest_one(Index(i)) : tree.nearest_before(Index(i), hint[i]);
       }
     },
     [](std::size_t) { return true; });

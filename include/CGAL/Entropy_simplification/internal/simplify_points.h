@@ -15,6 +15,7 @@
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Lloyd_relocation.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
 #include <CGAL/Entropy_simplification/internal/Weighted_elimination.h>
 #include <CGAL/Entropy_simplification/internal/reference_plane.h>
@@ -81,13 +82,14 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
 // The relocation that ends the default mode, with the `terms` switched on,
 // on the `scale` of each point, from `nearest`, each point's nearest present
 // point after the run, when the engine kept them (see
-// relocate_within_input). A relocated point takes the place, in the
+// relocate_within_input), its searches answered from `offsets` when they
+// can be. A relocated point takes the place, in the
 // removal order, of the point that replaces it. Returns each point's
 // nearest present point once relocated, when the relocation found them
 // (see Relocation), or nothing.
 template <typename ConcurrencyTag>
 Array<Index> relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
-                      const Array<double>& scale, Array<Index> nearest)
+                      const Array<double>& scale, Array<Index> nearest, const Neighbor_offsets& offsets)
 {
   Array<char> present = present_after(run, points.size());
   Array<Index> rank(points.size(), 0);
@@ -95,7 +97,7 @@ Array<Index> relocate(const Indexed_points& points, Engine_run& run, const Defau
     rank[run.removed[r]] = Index(r);
   Relocation relocation =
     relocate_within_input<ConcurrencyTag>(points, present, terms.relocation ? relocation_iterations : 0, terms, scale,
-                                          std::move(nearest));
+                                          std::move(nearest), offsets);
   for (const auto& swap : relocation.swaps)
     run.removed[rank[swap.second]] = swap.first;
   return std::move(relocation.site);
@@ -191,7 +193,8 @@ std::optional<Array<Index> > run_default_mode(Engine& engine, const Indexed_poin
     return std::nullopt;
   Array<Index> site; // each point's nearest kept point, when the relocation found them
   if ((terms.relocation || terms.coverage_swaps) && run.completed && !run.removed.empty())
-    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale, engine.take_nearest_present());
+    site = relocate<ConcurrencyTag>(indexed, run, terms, engine.field().scale, engine.take_nearest_present(),
+                                    engine.take_neighbor_offsets());
   if (through &&
       !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
     return std::nullopt;
