@@ -361,7 +361,7 @@ private:
     CGAL_precondition(m_count >= 2);
     Index listed[1 + following];
     const std::size_t itself = is_present(i) ? 1 : 0;
-    listed[0] = i;
+    listed[0] = i; // its own nearest when present, overwritten otherwise
     const std::size_t others = 1 + following - itself;
     if (!m_first_neighbors.offsets.first_present(i, others, [this](Index p) { return is_present(p); },
                                                  listed + itself))

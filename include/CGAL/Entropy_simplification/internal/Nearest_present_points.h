@@ -26,9 +26,10 @@ namespace internal {
 // For each point, the present point nearest it (ties by input position):
 // itself when present. At least one point must be present. The first
 // neighbours of `offsets`, unless empty, answer the searches they hold a
-// present point for (see Neighbor_offsets). `hint`, unless empty, gives each point a present point, such as
-// the median that took the place of its nearest, from which its search
-// starts bounded, so that it visits only the leaves near the point.
+// present point for (see Neighbor_offsets). `hint`, unless empty, gives
+// each point a present point, such as the median that took the place of
+// its nearest, from which its search starts bounded, so that it visits
+// only the leaves near the point.
 template <typename ConcurrencyTag>
 Array<Index> nearest_present_points(const Indexed_points& points, const Array<char>& present,
                                     const Array<Index>& hint = Array<Index>(),
