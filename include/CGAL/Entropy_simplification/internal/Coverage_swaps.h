@@ -519,10 +519,10 @@ void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, con
 
 // The coverage swaps of a direct call (see swap_in_turn), among all the
 // points, each point's nearest present point searched first from `hint`
-// and `offsets` (see nearest_present_points). Returns each point's nearest present point
-// after the swaps (ties by input position): itself when present, none when
-// no point is. The
-// levels of detail below a ranking's level start from them: searched anew,
+// and `offsets` (see nearest_present_points). Returns each point's nearest
+// present point after the swaps (ties by input position): itself when
+// present, none when no point is. The levels of detail below a ranking's
+// level start from them: searched anew,
 // they took about a third of what the levels add to the level's direct
 // call (1,000,000 lion samples, level 1%, without threads: 104 ms, against
 // 215 to 232 for the 11 boundaries below).

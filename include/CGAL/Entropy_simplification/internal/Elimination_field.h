@@ -286,8 +286,8 @@ inline First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, 
 // `first` what an elimination that follows `first_count` neighbours of
 // each point needs of them (see first_neighbors), once the normals it
 // estimated on the way are freed too: the feature strengths and the areas
-// the points sample make the scales, with the `terms` switched on. The entropies count for 60% of the progress, the
-// coarse scale for the rest.
+// the points sample make the scales, with the `terms` switched on. The
+// entropies count for 60% of the progress, the coarse scale for the rest.
 template <typename ConcurrencyTag, typename Progress>
 bool compute_elimination_field(const Indexed_points& points, unsigned int k, const Options& options,
                                const Default_mode_terms& terms, Array<Index> knn, std::size_t first_count,

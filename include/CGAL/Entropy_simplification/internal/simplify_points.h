@@ -83,10 +83,9 @@ inline Array<char> present_after(const Engine_run& run, std::size_t n)
 // on the `scale` of each point, from `nearest`, each point's nearest present
 // point after the run, when the engine kept them (see
 // relocate_within_input), its searches answered from `offsets` when they
-// can be. A relocated point takes the place, in the
-// removal order, of the point that replaces it. Returns each point's
-// nearest present point once relocated, when the relocation found them
-// (see Relocation), or nothing.
+// can be. A relocated point takes the place, in the removal order, of the
+// point that replaces it. Returns each point's nearest present point once
+// relocated, when the relocation found them (see Relocation), or nothing.
 template <typename ConcurrencyTag>
 Array<Index> relocate(const Indexed_points& points, Engine_run& run, const Default_mode_terms& terms,
                       const Array<double>& scale, Array<Index> nearest, const Neighbor_offsets& offsets)
