@@ -99,11 +99,17 @@ public:
   {}
 
   // Makes the points of `present` the present ones, which the next
-  // remove_down_to() follows from the start.
-  void set_present(Array<char> present)
+  // remove_down_to() follows from the start. `nearest`, when not empty,
+  // holds each point's nearest present point, itself when present (ties by
+  // input position), as the searches would find it: when the next run has
+  // its representatives follow from the start (see
+  // follow_representatives_when_few), that is all it needs of the input
+  // points, which then search nothing.
+  void set_present(Array<char> present, Array<Index> nearest = Array<Index>())
   {
     m_present = std::move(present);
     m_count = std::size_t(std::count(m_present.begin(), m_present.end(), char(1)));
+    m_given_nearest = std::move(nearest);
   }
 
   // Makes the next remove_down_to() end its rounds at the level boundaries
@@ -120,12 +126,16 @@ public:
     CGAL_precondition(target >= 1);
     Array<Index>().swap(m_nearest_present); // an earlier run's
     const bool relocates_levels = std::exchange(m_relocates_levels, false);
+    Array<Index> given_nearest = std::move(m_given_nearest);
     if (m_count <= target)
     {
       m_first_neighbors = First_neighbors(); // not to be held while the caller goes on
       return true;
     }
-    follow_present<ConcurrencyTag>();
+    if (relocates_levels && few_present() && !given_nearest.empty())
+      take_nearest<ConcurrencyTag>(std::move(given_nearest));
+    else
+      follow_present<ConcurrencyTag>();
     if (relocates_levels)
     {
       m_level_cells.emplace(indices_by_input_position(m_points), m_nearest);
@@ -192,13 +202,8 @@ private:
   void follow_present()
   {
     const std::size_t n = m_points.size();
-    m_weight = coverage_weights(m_field);
-    m_unit = share_unit(m_field, n);
-    m_largest_share = largest_share(n);
+    prepare_to_follow<ConcurrencyTag>();
     m_nearest.assign(n, none_index);
-    Array<std::atomic<std::int64_t> >(n).swap(m_cost);
-    list_present();
-    build_tree<ConcurrencyTag>();
     Array<Index> first_neighbors = std::move(m_first_neighbors.columns);
     if (m_count == n && first_neighbors.size() == n * following)
     {
@@ -217,6 +222,35 @@ private:
       for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
     }
   }
+
+  // Each point's `nearest` present point, given to set_present(), the
+  // costs at 0, and nothing followed: where the representatives follow at
+  // once, they search anew, and the input points' next and spares would go
+  // unread.
+  template <typename ConcurrencyTag>
+  void take_nearest(Array<Index> nearest)
+  {
+    prepare_to_follow<ConcurrencyTag>();
+    m_nearest = std::move(nearest);
+    m_following.assign(m_points.size() * following, none_index);
+  }
+
+  // The weights, the costs at 0, the present points listed and their tree.
+  template <typename ConcurrencyTag>
+  void prepare_to_follow()
+  {
+    const std::size_t n = m_points.size();
+    m_weight = coverage_weights(m_field);
+    m_unit = share_unit(m_field, n);
+    m_largest_share = largest_share(n);
+    Array<std::atomic<std::int64_t> >(n).swap(m_cost);
+    list_present();
+    build_tree<ConcurrencyTag>();
+  }
+
+  // Whether at most 1% of the points are present, below which a ranking's
+  // representatives follow (see follow_representatives_when_few).
+  bool few_present() const { return m_count <= (m_points.size() + 99) / 100; }
 
   // Calls `f(i)` for each point `i` that follows the present points: every
   // point, or the representatives (see follow_representatives_when_few).
@@ -250,8 +284,7 @@ private:
   template <typename ConcurrencyTag>
   void follow_representatives_when_few()
   {
-    const std::size_t one_percent = (m_points.size() + 99) / 100;
-    if (!m_followers.empty() || m_count > one_percent)
+    if (!m_followers.empty() || !few_present())
       return;
     CGAL_precondition(m_level_cells.has_value()); // a ranking's, whose cells list the input order
     Array<double> weight(m_points.size(), 0.);
@@ -525,6 +558,7 @@ private:
   double m_unit = 1.;
   std::int64_t m_largest_share = 0;
   Array<Index> m_nearest;
+  Array<Index> m_given_nearest; // see set_present; read by the next run only
   // of each point, its next present point and then its spares, the present
   // points that came after the next when they were searched (none_index
   // where there were none, and when a relocation may have brought nearer

@@ -144,12 +144,14 @@ bool eliminate_the_kept(Weighted_elimination& engine, const Indexed_points& poin
 // following its nearest and next kept points from the relocated ones, its
 // rounds ending at the level boundaries, each relocated (see Level_cells),
 // until at most 1% of the points are present, which then stand for the
-// input points (see Coverage_elimination).
+// input points (see Coverage_elimination). `site`, each point's nearest
+// kept point when the relocation found them, spares the input points their
+// searches when at most 1% are kept.
 template <typename ConcurrencyTag>
 bool eliminate_the_kept(Coverage_elimination& engine, const Indexed_points& points, Engine_run& run,
-                        Array<Index>, const std::function<bool(double)>& callback)
+                        Array<Index> site, const std::function<bool(double)>& callback)
 {
-  engine.set_present(present_after(run, points.size()));
+  engine.set_present(present_after(run, points.size()), std::move(site));
   engine.relocate_level_boundaries();
   return remove_down_to_one<ConcurrencyTag>(engine, points, run, callback);
 }
