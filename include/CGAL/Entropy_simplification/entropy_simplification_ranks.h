@@ -124,9 +124,9 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    1.053 times at 1% (the user manual gives the figures); at 0.5% and
    0.1%, where the kept points stand for the input points, up to 1.081 and
    1.105 times. With a level, the prefixes longer than `L` are not
-   relocated, and are up to 1.085 times worse. The whole order costs 1.32
-   to 1.38 times a direct call to 1% of the points without a level, and
-   1.08 to 1.12 times with the level at 1% (medians on 100,000 and
+   relocated, and are up to 1.085 times worse. The whole order costs 1.30
+   to 1.36 times a direct call to 1% of the points without a level, and
+   1.04 to 1.07 times with the level at 1% (medians on 100,000 and
    1,000,000 points, with one thread and with two).
 
    Coincident points are ranked last: their first copy in input order takes
