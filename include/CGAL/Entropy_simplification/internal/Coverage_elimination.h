@@ -135,7 +135,10 @@ public:
     if (relocates_levels && few_present() && !given_nearest.empty())
       take_nearest<ConcurrencyTag>(std::move(given_nearest));
     else
+    {
+      Array<Index>().swap(given_nearest); // not to be held through the run
       follow_present<ConcurrencyTag>();
+    }
     if (relocates_levels)
     {
       m_level_cells.emplace(indices_by_input_position(m_points), m_nearest);
