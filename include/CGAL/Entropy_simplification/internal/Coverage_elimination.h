@@ -129,7 +129,10 @@ public:
     Array<Index> given_nearest = std::move(m_given_nearest);
     if (m_count <= target)
     {
-      m_first_neighbors = First_neighbors(); // not to be held while the caller goes on
+      // nothing to remove: no relocation follows to take the offsets, which
+      // a ranking's run through the kept points would hold at its peak;
+      // the columns stay for that run to follow from its start
+      m_first_neighbors.offsets = Neighbor_offsets();
       return true;
     }
     if (relocates_levels && few_present() && !given_nearest.empty())

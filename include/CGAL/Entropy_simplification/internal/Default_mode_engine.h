@@ -57,6 +57,11 @@ public:
   // kept through the runs for the searches of the relocation, when
   // initialize() kept any; taken once.
   Neighbor_offsets take_neighbor_offsets() { return std::move(m_first_neighbors.offsets); }
+  // Frees what initialize() kept of the first neighbours, once no run is
+  // to follow. A run that removed nothing keeps their columns for the next,
+  // which then follows them rather than searching for every point's nearest
+  // present points.
+  void release_first_neighbors() { m_first_neighbors = First_neighbors(); }
 
 protected:
   // `first_neighbors_kept`: how many of each point's nearest neighbours

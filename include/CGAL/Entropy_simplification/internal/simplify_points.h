@@ -200,6 +200,7 @@ std::optional<Array<Index> > run_default_mode(Engine& engine, const Indexed_poin
       !(run.completed && eliminate_the_kept<ConcurrencyTag>(engine, indexed, run, std::move(site), callback)))
     return std::nullopt;
   Array<Index>().swap(site); // a direct call's are not needed: their memory goes back first
+  engine.release_first_neighbors();
   return finish<ConcurrencyTag>(engine, indexed, run, with_normals, write_normal);
 }
 
