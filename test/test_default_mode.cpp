@@ -499,6 +499,69 @@ TEST_CASE("Default mode: the coverage swaps equal the reference's, and never wid
       }
 }
 
+TEST_CASE("Default mode: the swaps' searches find the present points whether or not their tree holds them",
+          "[default][reference][coverage]")
+{
+  // A tenth of the points present, and a few far ones offered to the tree;
+  // then points made present and absent at random, most of them ones the
+  // tree does not hold, so that they are listed apart, the list is built
+  // into the tree again, and points listed apart leave it.
+  const test_clouds::Cloud cloud = test_clouds::wavy_surface(2000, 0.01, 41);
+  const ESI::Indexed_points indexed =
+    ESI::sort_spatially<CGAL::Sequential_tag>(ESI::Array<ESI::Working_point>(cloud.points.begin(), cloud.points.end()));
+  const ESI::Index n = ESI::Index(indexed.size());
+  ESI::Array<char> present(n, 0);
+  for (ESI::Index i = 0; i < n; i += 10)
+    present[i] = 1;
+  ESI::Tree_search<CGAL::Sequential_tag> search(indexed, present, ESI::nearest_present_points<CGAL::Sequential_tag>(indexed, present));
+  std::vector<ESI::Neighbor> offered;
+  for (ESI::Index i = 5; i < n; i += 100)
+    offered.push_back(ESI::Neighbor{ 0., indexed.input_position[i], i });
+  search.may_become_present(offered);
+  const auto brute_force = [&](ESI::Index q, ESI::Index excluded) {
+    ESI::Neighbor best = ESI::no_neighbor();
+    for (ESI::Index j = 0; j < n; ++j)
+      if (present[j] && j != q && j != excluded)
+        best = (std::min)(best, ESI::Neighbor{ ESI::squared_distance(indexed.points[q], indexed.points[j]),
+                                               indexed.input_position[j], j });
+    return best.id;
+  };
+  test_clouds::Random random(42);
+  std::vector<ESI::Index> brought; // the points made present here
+  std::size_t mismatches = 0, checks = 0, made_absent = 0;
+  for (int step = 0; step < 400; ++step)
+  {
+    if (step % 3 != 2)
+    {
+      ESI::Index p;
+      do
+        p = ESI::Index(random.below(n));
+      while (present[p]);
+      present[p] = 1;
+      search.made_present(p);
+      brought.push_back(p);
+    }
+    else
+    {
+      const ESI::Index p = step % 2 ? brought[random.below(brought.size())] : ESI::Index(10 * random.below(n / 10));
+      if (!present[p])
+        continue;
+      present[p] = 0;
+      search.made_absent(p);
+      ++made_absent;
+    }
+    for (ESI::Index q = ESI::Index(step % 7); q < n; q += 53)
+    {
+      const ESI::Index excluded = ESI::Index(random.below(n));
+      mismatches += search.nearest_but(q, excluded).id != brute_force(q, excluded);
+      ++checks;
+    }
+  }
+  CHECK(made_absent > 100);
+  CHECK(checks > 10000);
+  CHECK(mismatches == 0);
+}
+
 TEST_CASE("Default mode: a coverage swap that would widen a gap is not made", "[default][reference][coverage]")
 {
   // Evenly spaced on a line, every other point present: the farthest point

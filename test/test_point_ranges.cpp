@@ -49,7 +49,52 @@ std::set<std::array<double, 3> > coordinates(typename std::vector<Point>::const_
   return result;
 }
 
+// A scan record without a default constructor, whose point a map reads.
+struct Scan_record
+{
+  Scan_record(const Epick::Point_3& p, int i) : point(p), id(i) {}
+  Epick::Point_3 point;
+  int id;
+};
+
+struct Scan_record_point_map
+{
+  using key_type = Scan_record;
+  using value_type = Epick::Point_3;
+  using reference = const Epick::Point_3&;
+  using category = boost::readable_property_map_tag;
+  friend reference get(const Scan_record_point_map&, const Scan_record& r) { return r.point; }
+};
+
 } // namespace
+
+TEST_CASE("Ranges of elements without a default constructor: reordered as a vector of points is", "[kernels]")
+{
+  test_parallel::require_tbb();
+  const std::vector<Epick::Point_3> points = replica_points(1600, 400, 8);
+  std::vector<Scan_record> records;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    records.emplace_back(points[i], int(i));
+  std::vector<Epick::Point_3> expected = points;
+  const auto kept = CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(expected, 10,
+                                                                           CGAL::parameters::select_percentage(10.));
+  REQUIRE(kept - expected.begin() == 200);
+  const auto first_removed = test_parallel::on_two_threads_or_more([&] {
+    return CGAL::entropy_simplify_point_set<test_parallel::Parallel_tag>(
+      records, 10, CGAL::parameters::select_percentage(10.).point_map(Scan_record_point_map()));
+  });
+  CHECK(first_removed - records.begin() == 200);
+  bool same_order = true, each_once = true;
+  std::vector<bool> seen(points.size(), false);
+  for (std::size_t i = 0; i < records.size(); ++i)
+  {
+    same_order = same_order && records[i].point == expected[i];
+    each_once = each_once && !seen[std::size_t(records[i].id)] && points[std::size_t(records[i].id)] == records[i].point;
+    seen[std::size_t(records[i].id)] = true;
+  }
+  CHECK(same_order);
+  CHECK(each_once);
+}
 
 TEST_CASE("Point_set_3: extra properties follow the kept points, its normals are untouched", "[point set]")
 {

@@ -41,12 +41,14 @@ namespace internal {
 // Where a surface weighs c times more, the sum is least with about c^(2/3)
 // times more points per area (the density of a weighted k-median on a
 // surface), so the kept density grows as 1 + w s, as in the field's radius.
-inline Array<double> coverage_weights(const Elimination_field& field)
+template <typename ConcurrencyTag>
+Array<double> coverage_weights(const Elimination_field& field)
 {
   Array<double> weight(field.scale.size());
   const double smallest = field.scale.empty() ? 1. : *std::min_element(field.scale.begin(), field.scale.end());
-  for (std::size_t i = 0; i < weight.size(); ++i)
-    weight[i] = std::pow(smallest / field.scale[i], 3.);
+  for_each_index<ConcurrencyTag>(
+    weight.size(), [&](std::size_t i) { weight[i] = std::pow(smallest / field.scale[i], 3.); },
+    [](std::size_t) { return true; });
   return weight;
 }
 
@@ -246,7 +248,7 @@ private:
   void prepare_to_follow()
   {
     const std::size_t n = m_points.size();
-    m_weight = coverage_weights(m_field);
+    m_weight = coverage_weights<ConcurrencyTag>(m_field);
     m_unit = share_unit(m_field, n);
     m_largest_share = largest_share(n);
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);

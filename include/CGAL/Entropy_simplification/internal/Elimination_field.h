@@ -99,7 +99,7 @@ bool coarse_feature_strength(const Indexed_points& points, const Array<Index>& c
         points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
         [&](Index i) { return slot[i]; }, normals, entropy, [&](double f) { return progress((1. + f) / 3.); }))
     return false;
-  const double floor = entropy_noise_floor(entropy);
+  const double floor = entropy_noise_floor<ConcurrencyTag>(entropy);
   return for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
@@ -134,13 +134,14 @@ Array<double> sampled_areas(const Indexed_points& points, unsigned int k, const 
 constexpr double largest_area_in_medians = 1000.;
 
 // Lowers the areas above `largest_area_in_medians` medians to that bound.
-inline void cap_isolated_areas(Array<double>& area)
+template <typename ConcurrencyTag>
+void cap_isolated_areas(Array<double>& area)
 {
   if (area.empty())
     return;
-  const double largest = largest_area_in_medians * median(area);
-  for (double& a : area)
-    a = (std::min)(a, largest);
+  const double largest = largest_area_in_medians * median<ConcurrencyTag>(area);
+  for_each_index<ConcurrencyTag>(
+    area.size(), [&](std::size_t i) { area[i] = (std::min)(area[i], largest); }, [](std::size_t) { return true; });
 }
 
 // `x` with its significand rounded to 30 bits, a relative change below
@@ -177,7 +178,7 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
   }
   const double weight =
     terms.feature_budget ? budgeted_feature_weight(feature_weight, feature_area, total_area) : feature_weight;
-  const double typical_area = median(area);
+  const double typical_area = median<ConcurrencyTag>(area);
 
   field.scale.resize(n);
   Array<double> weighted_area(n);
@@ -252,7 +253,7 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
   else if (!coarse_feature_strength<ConcurrencyTag>(points, coarse_points(points), k, estimation, strength,
                                                     progress))
     return false;
-  const double floor = entropy_noise_floor(entropy);
+  const double floor = entropy_noise_floor<ConcurrencyTag>(entropy);
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
@@ -270,14 +271,18 @@ struct First_neighbors
   Neighbor_offsets offsets;
 };
 
-inline First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
+template <typename ConcurrencyTag>
+First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
 {
   if (count == 0 || count > k)
     return {};
-  const std::size_t n = knn.size() / k;
-  First_neighbors first{ Array<Index>(n * count), Neighbor_offsets(knn, k) };
-  for (std::size_t i = 0; i < n; ++i)
-    std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.columns.begin() + std::ptrdiff_t(i * count));
+  First_neighbors first{ Array<Index>(knn.size() / k * count), Neighbor_offsets(knn, k, ConcurrencyTag()) };
+  for_each_index<ConcurrencyTag>(
+    knn.size() / k,
+    [&](std::size_t i) {
+      std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.columns.begin() + std::ptrdiff_t(i * count));
+    },
+    [](std::size_t) { return true; });
   return first;
 }
 
@@ -299,8 +304,8 @@ bool compute_elimination_field(const Indexed_points& points, unsigned int k, con
     return false;
   Array<double> area =
     sampled_areas<ConcurrencyTag>(points, k, [&](Index i) { return &knn[std::size_t(i) * k]; });
-  cap_isolated_areas(area);
-  first = first_neighbors(knn, k, first_count);
+  cap_isolated_areas<ConcurrencyTag>(area);
+  first = first_neighbors<ConcurrencyTag>(knn, k, first_count);
   Array<Index>().swap(knn);
   Array<double> strength;
   if (!feature_strengths<ConcurrencyTag>(points, k, options.normal_estimation, entropy, terms.coarse_scale, strength,

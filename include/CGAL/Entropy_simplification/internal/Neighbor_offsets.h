@@ -10,6 +10,9 @@
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/for_each_index.h>
+
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -39,19 +42,23 @@ public:
   Neighbor_offsets() = default;
 
   // From `knn`, the k nearest neighbours of each point nearest first (those
-  // of point i at knn[i * k]).
-  Neighbor_offsets(const Array<Index>& knn, unsigned int k)
+  // of point i at knn[i * k]); in parallel with CGAL::Parallel_tag.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
+  Neighbor_offsets(const Array<Index>& knn, unsigned int k, ConcurrencyTag = ConcurrencyTag())
     : m_columns((std::min)(k, most_columns)), m_offsets(k == 0 ? 0 : knn.size() / k * m_columns, beyond)
   {
-    const std::size_t n = k == 0 ? 0 : knn.size() / k;
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < m_columns; ++j)
-      {
-        const std::int64_t offset = std::int64_t(knn[i * k + j]) - std::int64_t(i);
-        if (offset <= beyond || offset > std::numeric_limits<std::int8_t>::max())
-          break;
-        m_offsets[i * m_columns + j] = std::int8_t(offset);
-      }
+    for_each_index<ConcurrencyTag>(
+      k == 0 ? 0 : knn.size() / k,
+      [&](std::size_t i) {
+        for (std::size_t j = 0; j < m_columns; ++j)
+        {
+          const std::int64_t offset = std::int64_t(knn[i * k + j]) - std::int64_t(i);
+          if (offset <= beyond || offset > std::numeric_limits<std::int8_t>::max())
+            break;
+          m_offsets[i * m_columns + j] = std::int8_t(offset);
+        }
+      },
+      [](std::size_t) { return true; });
   }
 
   // Writes to `first` the first `count` neighbours of `i` for which

@@ -11,6 +11,7 @@
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
 #include <iterator>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -52,11 +53,22 @@ std::size_t order_by_removal(const Array<Iterator>& at, const Array<Index>& remo
   source.insert(source.end(), removed.rbegin(), removed.rend());
 
   // Moved out in their new order, then back: the reads are scattered, the
-  // writes are not, and the moves back are independent of each other.
-  Array<typename std::iterator_traits<Iterator>::value_type> moved;
-  moved.reserve(n);
-  for (Index s : source)
-    moved.push_back(std::move(*at[s]));
+  // writes are not, and the moves either way are independent of each other
+  // (the moves out too, when the elements can be constructed first).
+  using Value = typename std::iterator_traits<Iterator>::value_type;
+  Array<Value> moved;
+  if constexpr (std::is_default_constructible<Value>::value)
+  {
+    moved.resize(n);
+    for_each_index<ConcurrencyTag>(
+      n, [&](std::size_t j) { moved[j] = std::move(*at[source[j]]); }, [](std::size_t) { return true; });
+  }
+  else
+  {
+    moved.reserve(n);
+    for (Index s : source)
+      moved.push_back(std::move(*at[s]));
+  }
   for_each_index<ConcurrencyTag>(
     n, [&](std::size_t j) { *at[j] = std::move(moved[j]); }, [](std::size_t) { return true; });
   return kept;
