@@ -513,7 +513,8 @@ TEST_CASE("Default mode: the swaps' searches find the present points whether or 
   ESI::Array<char> present(n, 0);
   for (ESI::Index i = 0; i < n; i += 10)
     present[i] = 1;
-  ESI::Tree_search<CGAL::Sequential_tag> search(indexed, present, ESI::nearest_present_points<CGAL::Sequential_tag>(indexed, present));
+  ESI::Tree_search<CGAL::Sequential_tag> search(indexed, present,
+                                                ESI::nearest_present_points<CGAL::Sequential_tag>(indexed, present));
   std::vector<ESI::Neighbor> offered;
   for (ESI::Index i = 5; i < n; i += 100)
     offered.push_back(ESI::Neighbor{ 0., indexed.input_position[i], i });

@@ -89,8 +89,9 @@ TEST_CASE("Ranges of elements without a default constructor: reordered as a vect
   for (std::size_t i = 0; i < records.size(); ++i)
   {
     same_order = same_order && records[i].point == expected[i];
-    each_once = each_once && !seen[std::size_t(records[i].id)] && points[std::size_t(records[i].id)] == records[i].point;
-    seen[std::size_t(records[i].id)] = true;
+    const std::size_t id = std::size_t(records[i].id);
+    each_once = each_once && !seen[id] && points[id] == records[i].point;
+    seen[id] = true;
   }
   CHECK(same_order);
   CHECK(each_once);

@@ -143,12 +143,9 @@ public:
       }
   }
 
-  template <typename Function>
-  void for_each_taking_part(const Function& f) const
-  {
-    for (Index i = 0; i < Index(m_points.size()); ++i)
-      f(i);
-  }
+  // The points taking part: every point.
+  std::size_t taking_part_count() const { return m_points.size(); }
+  Index taking_part(std::size_t r) const { return Index(r); }
 
   // The tree holds the points of `far` (Neighbor entries) from then on.
   template <typename Range>
@@ -289,12 +286,9 @@ public:
     : m_points(points), m_present(present), m_level(level), m_first(first), m_neighbors(neighbors)
   {}
 
-  template <typename Function>
-  void for_each_taking_part(const Function& f) const
-  {
-    for (Index i : m_level)
-      f(i);
-  }
+  // The points taking part: those of the level.
+  std::size_t taking_part_count() const { return m_level.size(); }
+  Index taking_part(std::size_t r) const { return m_level[r]; }
 
   Neighbor nearest_but(Index q, Index excluded) const
   {
@@ -350,7 +344,7 @@ private:
 // are a heap of the points beyond a threshold and of every change since it
 // was set, the outdated entries skipped when they come to the top; when
 // none beyond the threshold is left, it is set again lower.
-template <typename Search>
+template <typename Search, typename ConcurrencyTag>
 class Nearest_present
 {
   // the heap's order: farthest on top, then the lowest input position
@@ -451,27 +445,27 @@ private:
   }
 
   // The heap holds again every point not present at least as far as the
-  // `m_heap_size` farthest (all of them when as few), the threshold.
+  // `m_heap_size` farthest (all of them when as few), the threshold. The
+  // passes over the points run in parallel with CGAL::Parallel_tag, the
+  // entries listed in index order.
   void fill_heap()
   {
-    Array<double> distances;
-    m_search.for_each_taking_part([&](Index i) {
-      if (!m_present[i])
-        distances.push_back(nearest(i).squared_distance);
-    });
-    m_threshold = 0.;
-    if (distances.size() > m_heap_size)
-    {
-      std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(m_heap_size - 1), distances.end(),
-                       [](double a, double b) { return a > b; });
-      m_threshold = distances[m_heap_size - 1];
-    }
-    Array<double>().swap(distances);
-    m_far.clear();
-    m_search.for_each_taking_part([&](Index i) {
-      if (!m_present[i] && nearest(i).squared_distance >= m_threshold)
-        m_far.push_back(far_entry(i));
-    });
+    const std::size_t count = m_search.taking_part_count();
+    // a present point's entry comes before every other
+    const auto entry = [this](std::size_t r) {
+      const Index i = m_search.taking_part(r);
+      return m_present[i] ? Neighbor{ -1., 0, i } : far_entry(i);
+    };
+    const auto nearer = [](const Neighbor& a, const Neighbor& b) { return a.squared_distance < b.squared_distance; };
+    std::size_t absent = 0;
+    for (std::size_t r = 0; r < count; ++r)
+      absent += std::size_t(!m_present[m_search.taking_part(r)]);
+    m_threshold = absent > m_heap_size
+                    ? nth_smallest<ConcurrencyTag>(count, entry, count - m_heap_size + 1, nearer).squared_distance
+                    : 0.;
+    std::size_t nearer_count = 0;
+    m_far = values_within<ConcurrencyTag>(count, entry, Neighbor{ m_threshold, 0, 0 }, no_neighbor(), nearer,
+                                          nearer_count);
     std::make_heap(m_far.begin(), m_far.end(), below);
     m_search.may_become_present(m_far);
     m_heap_size *= 2;
@@ -548,8 +542,8 @@ private:
 // members would all be nearer their new nearest present points than the
 // farthest point then is. The points passed, and the one returned, are
 // passed for good. Nothing when none is left.
-template <typename Search>
-std::optional<Index> next_to_leave(Nearest_present<Search>& nearest, Crowding_order& crowded,
+template <typename Search, typename ConcurrencyTag>
+std::optional<Index> next_to_leave(Nearest_present<Search, ConcurrencyTag>& nearest, Crowding_order& crowded,
                                    const Array<double>& scale)
 {
   const double greatest = nearest.greatest_squared_distance();
@@ -576,8 +570,8 @@ std::optional<Index> next_to_leave(Nearest_present<Search>& nearest, Crowding_or
 // each point's, says how crowded), so that the swaps never raise the
 // greatest distance from a point to the present points. They stop early when
 // every point is present, or no present point can leave.
-template <typename Search>
-void swap_in_turn(Nearest_present<Search>& nearest, Crowding_order& crowded, const Array<double>& scale,
+template <typename Search, typename ConcurrencyTag>
+void swap_in_turn(Nearest_present<Search, ConcurrencyTag>& nearest, Crowding_order& crowded, const Array<double>& scale,
                   std::size_t swaps)
 {
   for (std::size_t swap = 0; swap < swaps; ++swap)
@@ -634,8 +628,8 @@ Array<Index> swap_farthest_for_crowded(const Indexed_points& points, Array<char>
       [](std::size_t) { return true; });
   }
   Tree_search<ConcurrencyTag> search(points, present, site);
-  Nearest_present<Tree_search<ConcurrencyTag> > nearest(points, present, std::move(search), std::move(site),
-                                                        heap_size(swaps));
+  Nearest_present<Tree_search<ConcurrencyTag>, ConcurrencyTag> nearest(points, present, std::move(search),
+                                                                       std::move(site), heap_size(swaps));
   Crowding_order order(std::move(crowded));
   swap_in_turn(nearest, order, scale, swaps);
   return nearest.release_sites();
@@ -677,7 +671,7 @@ Array<Index> swap_among_neighbors(const Indexed_points& points, Array<char>& pre
       crowded[r] = crowding_entry(points, scale, s, search.nearest_but(s, s).squared_distance);
     },
     [](std::size_t) { return true; });
-  Nearest_present<List_search> nearest(points, present, search, std::move(site), heap_size(swaps));
+  Nearest_present<List_search, ConcurrencyTag> nearest(points, present, search, std::move(site), heap_size(swaps));
   Crowding_order order(std::move(crowded));
   swap_in_turn(nearest, order, scale, swaps);
   return nearest.release_sites();
