@@ -10,6 +10,8 @@
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
+#include <boost/iterator/counting_iterator.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -61,44 +63,108 @@ inline std::uint64_t coordinate_key(const Working_point& p)
   return key;
 }
 
+// A point's key (see coordinate_key) and its input position.
+struct Keyed_position
+{
+  std::uint64_t key;
+  Index position;
+};
+
+// Orders `keyed` stably by `bucket_of(key)`, one of `buckets` (a power of
+// two), and returns where each bucket starts, then the end. First by the
+// bucket's leading bits, into at most 256 parts, a chunk of `keyed` at a
+// time, then each part by the rest: parts and chunks are done in parallel
+// with CGAL::Parallel_tag, and each part's writes stay within its own range,
+// which a cache holds, where writes across the whole array missed it nearly
+// every time: with two threads, this function and the buckets' sorts took
+// 0.42 s on 10,000,000 lion samples, against 0.60 s with one pass over the
+// whole array.
+template <typename ConcurrencyTag, typename BucketOf>
+Array<Index> order_by_bucket(Array<Keyed_position>& keyed, std::size_t buckets, const BucketOf& bucket_of)
+{
+  const std::size_t n = keyed.size(), parts = (std::min)(buckets, std::size_t(256)), per_part = buckets / parts;
+  constexpr std::size_t chunk = std::size_t(1) << 16;
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  const auto part_of = [&](const Keyed_position& k) { return bucket_of(k.key) / per_part; };
+  // each chunk's count of each part, then where its entries of that part go
+  Array<Index> offset(chunks * parts, 0);
+  for_each_index<ConcurrencyTag>(
+    chunks,
+    [&](std::size_t c) {
+      for (std::size_t r = c * chunk; r < (std::min)(n, (c + 1) * chunk); ++r)
+        ++offset[c * parts + part_of(keyed[r])];
+    },
+    [](std::size_t) { return true; });
+  Array<Index> part_start(parts + 1);
+  Index sum = 0;
+  for (std::size_t p = 0; p < parts; ++p)
+  {
+    part_start[p] = sum;
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      const Index count = offset[c * parts + p];
+      offset[c * parts + p] = sum;
+      sum += count;
+    }
+  }
+  part_start[parts] = sum;
+  Array<Keyed_position> by_part(n);
+  for_each_index<ConcurrencyTag>(
+    chunks,
+    [&](std::size_t c) {
+      for (std::size_t r = c * chunk; r < (std::min)(n, (c + 1) * chunk); ++r)
+        by_part[offset[c * parts + part_of(keyed[r])]++] = keyed[r];
+    },
+    [](std::size_t) { return true; });
+  Array<Index>().swap(offset);
+
+  Array<Index> bucket_start(buckets + 1);
+  bucket_start[buckets] = Index(n);
+  for_each_index<ConcurrencyTag>(
+    parts,
+    [&](std::size_t p) {
+      Index* const start = bucket_start.data() + p * per_part;
+      std::fill_n(start, per_part, Index(0));
+      for (Index r = part_start[p]; r < part_start[p + 1]; ++r)
+        ++start[bucket_of(by_part[r].key) % per_part];
+      Index within = part_start[p];
+      for (std::size_t b = 0; b < per_part; ++b)
+      {
+        const Index count = start[b];
+        start[b] = within;
+        within += count;
+      }
+      Array<Index> next(start, start + per_part);
+      for (Index r = part_start[p]; r < part_start[p + 1]; ++r)
+        keyed[next[bucket_of(by_part[r].key) % per_part]++] = by_part[r];
+    },
+    [](std::size_t) { return true; });
+  return bucket_start;
+}
+
 // For each point, the input position of the first point equal to it, its
 // own when none comes before it. The points go into buckets by their keys'
-// leading bits, about four to a bucket, in input order; each bucket is
-// sorted by key, then coordinates, then position, so that equal points
-// follow each other, the first in input order first. Coordinates are read
-// only where keys are equal, and a bucket sorts in O(m log m) even where
-// keys collide, as a file made to collide would make them. A sort of the
-// whole cloud by coordinates took twice as long.
+// leading bits, about four to a bucket, in input order (see
+// order_by_bucket); each bucket is sorted by key, then coordinates, then
+// position, so that equal points follow each other, the first in input
+// order first. Coordinates are read only where keys are equal, and a bucket
+// sorts in O(m log m) even where keys collide, as a file made to collide
+// would make them. A sort of the whole cloud by coordinates took twice as
+// long.
 template <typename ConcurrencyTag, typename Key = std::uint64_t (*)(const Working_point&)>
 Array<Index> first_equal_points(const Array<Working_point>& points, const Key& key_of = coordinate_key)
 {
-  struct Keyed_position
-  {
-    std::uint64_t key;
-    Index position;
-  };
   const std::size_t n = points.size();
   int bits = 0;
   while (bits < 24 && (std::size_t(4) << bits) < n)
     ++bits;
   auto bucket_of = [bits](std::uint64_t key) { return bits == 0 ? std::size_t(0) : std::size_t(key >> (64 - bits)); };
 
-  Array<Keyed_position> keyed(n);
-  for_each_index<ConcurrencyTag>(
-    n, [&](std::size_t i) { keyed[i] = Keyed_position{ key_of(points[i]), Index(i) }; },
-    [](std::size_t) { return true; });
-  // 32-bit offsets, like the positions they count
-  Array<Index> bucket_start((std::size_t(1) << bits) + 1, 0);
-  for (const Keyed_position& k : keyed)
-    ++bucket_start[bucket_of(k.key) + 1];
-  for (std::size_t b = 1; b < bucket_start.size(); ++b)
-    bucket_start[b] += bucket_start[b - 1];
   Array<Keyed_position> by_bucket(n);
-  Array<Index> next(bucket_start.begin(), bucket_start.end() - 1);
-  for (const Keyed_position& k : keyed)
-    by_bucket[next[bucket_of(k.key)]++] = k;
-  Array<Keyed_position>().swap(keyed);
-  Array<Index>().swap(next);
+  for_each_index<ConcurrencyTag>(
+    n, [&](std::size_t i) { by_bucket[i] = Keyed_position{ key_of(points[i]), Index(i) }; },
+    [](std::size_t) { return true; });
+  const Array<Index> bucket_start = order_by_bucket<ConcurrencyTag>(by_bucket, std::size_t(1) << bits, bucket_of);
 
   auto before = [&points](const Keyed_position& a, const Keyed_position& b) {
     if (a.key != b.key)
@@ -132,6 +198,13 @@ Distinct_points collapse_duplicates(Array<Working_point> points)
 {
   const Array<Index> first = first_equal_points<ConcurrencyTag>(points);
   Distinct_points result;
+  if (std::equal(first.begin(), first.end(), boost::counting_iterator<Index>(0)))
+  {
+    // no copies, as in most scans: every point represents itself
+    result.input_position = all_indices(points.size());
+    result.points = std::move(points);
+    return result;
+  }
   Array<Index> slot(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
