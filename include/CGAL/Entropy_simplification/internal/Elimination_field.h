@@ -99,7 +99,7 @@ bool coarse_feature_strength(const Indexed_points& points, const Array<Index>& c
         points, coarse, k, estimation, [&](Index i) { return &knn[std::size_t(slot[i]) * k]; },
         [&](Index i) { return slot[i]; }, normals, entropy, [&](double f) { return progress((1. + f) / 3.); }))
     return false;
-  const double floor = entropy_noise_floor<ConcurrencyTag>(entropy);
+  const double floor = entropy_noise_floor(entropy);
   return for_each_index<ConcurrencyTag>(
     n,
     [&](std::size_t i) {
@@ -139,7 +139,7 @@ void cap_isolated_areas(Array<double>& area)
 {
   if (area.empty())
     return;
-  const double largest = largest_area_in_medians * median<ConcurrencyTag>(area);
+  const double largest = largest_area_in_medians * median(area);
   for_each_index<ConcurrencyTag>(
     area.size(), [&](std::size_t i) { area[i] = (std::min)(area[i], largest); }, [](std::size_t) { return true; });
 }
@@ -178,7 +178,7 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
   }
   const double weight =
     terms.feature_budget ? budgeted_feature_weight(feature_weight, feature_area, total_area) : feature_weight;
-  const double typical_area = median<ConcurrencyTag>(area);
+  const double typical_area = median(area);
 
   field.scale.resize(n);
   Array<double> weighted_area(n);
@@ -253,7 +253,7 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
   else if (!coarse_feature_strength<ConcurrencyTag>(points, coarse_points(points), k, estimation, strength,
                                                     progress))
     return false;
-  const double floor = entropy_noise_floor<ConcurrencyTag>(entropy);
+  const double floor = entropy_noise_floor(entropy);
   for_each_index<ConcurrencyTag>(
     points.size(),
     [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },

@@ -10,7 +10,6 @@
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
-#include <CGAL/Entropy_simplification/internal/for_each_index.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 
 #include <Eigen/Eigenvalues>
@@ -18,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 
 namespace CGAL {
 namespace Entropy_simplification {
@@ -58,25 +56,21 @@ double normal_tensor_entropy(std::size_t m, NormalAt normal)
   return entropy;
 }
 
-// The median of some values (not empty), the greater of the middle two of
-// an even count; selected in parallel with CGAL::Parallel_tag, without a
-// copy of the values.
-template <typename ConcurrencyTag = CGAL::Sequential_tag>
-double median(const Array<double>& values)
+// The median of some values (not empty).
+inline double median(Array<double> values)
 {
-  return nth_smallest<ConcurrencyTag>(
-    values.size(), [&values](std::size_t i) { return values[i]; }, values.size() / 2 + 1, std::less<double>());
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+  return values[values.size() / 2];
 }
 
 // The noise floor of a cloud's normal entropies: their median, but not below
 // the entropy of normals spread by about one degree, so that a noise-free
 // sample of flat faces does not make every slight curvature a feature.
-template <typename ConcurrencyTag = CGAL::Sequential_tag>
-double entropy_noise_floor(const Array<double>& entropy)
+inline double entropy_noise_floor(const Array<double>& entropy)
 {
   const double one_degree = 0.0175;
   const double smallest = -2. * (one_degree * one_degree / 2.) * std::log(one_degree * one_degree / 2.);
-  return entropy.empty() ? smallest : (std::max)(smallest, median<ConcurrencyTag>(entropy));
+  return entropy.empty() ? smallest : (std::max)(smallest, median(entropy));
 }
 
 // Feature strength in [0, 1]: 0 up to twice the noise floor, 1 from ten
