@@ -229,17 +229,12 @@ private:
   // apart.
   void nearest_present(Index q, std::size_t count, Array<Neighbor>& near) const
   {
-    m_tree->nearest(q, count, near);
+    near.resize(count);
+    Point_tree::Best_list best{ count, near.data(), m_tree->nearest(q, count, near.data()) };
     for (Index a : m_apart)
-    {
-      const Neighbor candidate{ squared_distance(m_points.points[q], m_points.points[a]), m_points.input_position[a],
-                                a };
-      if (a == q || (near.size() == count && !(candidate < near.back())))
-        continue;
-      if (near.size() == count)
-        near.pop_back();
-      near.insert(std::upper_bound(near.begin(), near.end(), candidate), candidate);
-    }
+      if (a != q)
+        best.offer(Neighbor{ squared_distance(m_points.points[q], m_points.points[a]), m_points.input_position[a], a });
+    near.resize(best.size);
   }
 
   // The present points within `squared_reach` of `q`, other than `q`.

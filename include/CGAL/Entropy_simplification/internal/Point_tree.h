@@ -289,6 +289,7 @@ private:
     return distance;
   }
 
+public:
   // The best points found so far: a list of at most `count` in the
   // neighbour order, or a single one. A point farther than `bound()` cannot
   // enter.
@@ -320,6 +321,8 @@ private:
       list[slot] = candidate;
     }
   };
+
+private:
   struct Best_one
   {
     Neighbor best{ std::numeric_limits<double>::infinity(), 0, 0 };
