@@ -70,7 +70,8 @@ bool estimate_normal_entropy(const Indexed_points& points, const Array<Index>& s
 
 // The feature strength at a coarse scale, for every point, to `strength`:
 // that of its nearest point of `coarse`, whose normals and entropies are
-// computed among the coarse points only. Their neighbourhoods are wider, so
+// computed among the coarse points only, times coarse_strength_share.
+// Their neighbourhoods are wider, so
 // that a smooth curvature that scanner noise hides at the fine scale shows
 // there. With a large k this takes seconds, hence the progress: its three
 // passes count for a third each; returns false when it asked to stop.
@@ -105,7 +106,7 @@ bool coarse_feature_strength(const Indexed_points& points, const Array<Index>& c
     [&](std::size_t i) {
       // a coarse point is its own nearest, which the search leaves out
       const Index c = slot[i] == coarse.size() ? tree.nearest_one(Index(i)) : Index(i);
-      strength[i] = feature_strength(entropy[slot[c]], floor);
+      strength[i] = coarse_strength_share * feature_strength(entropy[slot[c]], floor);
     },
     [&](std::size_t done) { return progress((2. + double(done) / double(n)) / 3.); });
 }
