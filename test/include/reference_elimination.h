@@ -562,14 +562,23 @@ inline std::vector<std::pair<double, std::size_t> > nearest_two_present(const st
   return two;
 }
 
-// The weight of each point in the greedy coverage elimination: (smallest
-// scale / its scale)^3.
-inline std::vector<double> coverage_weights(const Field& field)
+// The exponent e of the weights while `count` of `n` points are present:
+// 1.1 above 35% of them, 1.35 above 20%, 1.6 otherwise.
+inline double coverage_exponent(std::size_t count, std::size_t n)
+{
+  const double fraction = double(count) / double(n);
+  return fraction > 0.35 ? 1.1 : fraction > 0.2 ? 1.35 : 1.6;
+}
+
+// The weight of each point in the greedy coverage elimination while `count`
+// of the points are present: (smallest scale / its scale)^(2e).
+inline std::vector<double> coverage_weights(const Field& field, std::size_t count)
 {
   const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
+  const double e = coverage_exponent(count, field.scale.size());
   std::vector<double> weight;
   for (double s : field.scale)
-    weight.push_back(std::pow(smallest / s, 3.));
+    weight.push_back(std::pow(smallest / s, 2. * e));
   return weight;
 }
 
@@ -583,7 +592,8 @@ struct Followers
 
 // The removal order from the `present` points (all when empty) down to
 // `target`, the `followers` being the points whose distances count. By
-// default, every point counts and weighs (smallest scale / its scale)^3;
+// default, every point counts and weighs as coverage_weights() gives at
+// the start of each round;
 // what removing its nearest present point costs it is its weight times the
 // distance to its next one less the distance to the nearest (each distance
 // d being sqrt(d^2 + spread^2) for a follower of some spread), in units of
@@ -604,7 +614,6 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
   const std::size_t n = points.size();
   if (present.empty())
     present.assign(n, true);
-  const std::vector<double> weight = followers.weight.empty() ? coverage_weights(field) : followers.weight;
   const std::vector<double> spread = followers.spread.empty() ? std::vector<double>(n, 0.) : followers.spread;
   const auto counts = [&](std::size_t p) { return followers.weight.empty() || followers.weight[p] != 0.; };
   std::int64_t counted = 0;
@@ -617,6 +626,7 @@ inline std::vector<std::size_t> coverage_eliminate(const std::vector<Point>& poi
   std::vector<std::size_t> removed;
   while (count > target)
   {
+    const std::vector<double> weight = followers.weight.empty() ? coverage_weights(field, count) : followers.weight;
     std::vector<std::int64_t> cost(n, 0);
     std::vector<std::pair<std::size_t, std::size_t> > nearest_and_next;
     for (std::size_t p = 0; p < n; ++p)
@@ -1064,7 +1074,7 @@ inline std::vector<std::size_t> coverage_eliminate_by_boundaries(const std::vect
   const auto represent_when_few = [&] {
     if (!followers.weight.empty() || count > (n + 99) / 100)
       return;
-    const std::vector<double> weight = coverage_weights(field);
+    const std::vector<double> weight = coverage_weights(field, count);
     followers.weight.assign(n, 0.);
     followers.spread.assign(n, 0.);
     for (std::size_t p = 0; p < n; ++p)
