@@ -363,7 +363,9 @@ std::vector<std::size_t> ranks_with_terms(const std::vector<Point>& points, unsi
 
 // Either elimination against the reference's scans from scratch (each round
 // of the greedy coverage elimination, each removal of weighted sample
-// elimination): the removal order to a fifth, a half and nine tenths, and
+// elimination): the removal order to a tenth, a fifth, a half and nine
+// tenths (the greedy elimination's three exponents, see
+// coverage_weight_exponent), and
 // the ranks through the kept points from a fifth, sequentially and in
 // parallel. A stray point thousands of spacings away, and one so far that
 // its shares reach their bound (see largest_share); a grid whose costs all
@@ -392,7 +394,7 @@ TEST_CASE("Default mode: with either elimination, removal order and ranks equal 
         const std::vector<Point>& points = setting.cloud.points;
         const reference::Field field = reference::feature_field(points, setting.k, options, reference_with);
         const ESI::Array<ESI::Working_point> input(points.begin(), points.end());
-        for (std::size_t tenths : { std::size_t(2), std::size_t(5), std::size_t(9) })
+        for (std::size_t tenths : { std::size_t(1), std::size_t(2), std::size_t(5), std::size_t(9) })
         {
           const std::size_t target = points.size() * tenths / 10;
           INFO(setting.cloud.name << ", feature weight " << feature_weight << ", target " << target
