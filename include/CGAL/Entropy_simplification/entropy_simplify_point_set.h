@@ -106,10 +106,9 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    and `w` `Options::feature_weight`, lowered where features cover much of
    the area, so that features keep up to about `1 + w` times the density of
    flat regions: `e` is 1.1 while more than 35% of the distinct points are
-   kept, 1.35 while more than 20%, and 1.6 below, as a weight buys a greater density where
-   each kept point stands for fewer input points. The feature strength is
-   the variation of the
-   normals of `p` and `N(p)`, the entropy of the eigenvalues of their
+   kept, 1.35 while more than 20%, and 1.6 below, as a weight buys a
+   greater density where each kept point stands for fewer input points.
+   The feature strength is the variation of the normals of `p` and `N(p)`, the entropy of the eigenvalues of their
    orientation tensor, independent of their orientation and of any
    reference plane, measured against the cloud's own noise (its median), at
    the scale of `k` and at a coarser scale. Where the input's density

@@ -45,11 +45,11 @@ namespace internal {
 // the flat regions thinned, which left the mean distance at 50% kept 3.6 to
 // 5.0% higher on four of the benchmark's inputs with sharp edges, above
 // Open3D's farthest point sampling. So the exponent is 1.1 while more than
-// 35% of the points are present, 1.35 while more than 20%, and 1.6 below, a little
-// above 3/2, which gives fandisk's sharp edges at 10% the share issue 12
-// asks for (manual: the greedy coverage elimination). It depends on the
-// points present, not on the count asked for, so that a ranking's prefixes
-// follow the same weights as direct calls.
+// 35% of the points are present, 1.35 while more than 20%, and 1.6 below,
+// a little above 3/2, which gives fandisk's sharp edges at 10% the share
+// issue 12 asks for (manual: the greedy coverage elimination). It depends
+// on the points present, not on the count asked for, so that a ranking's
+// prefixes follow the same weights as direct calls.
 inline double coverage_weight_exponent(std::size_t present, std::size_t n)
 {
   // in 64 bits, as 100 times 2^32 points would wrap a 32-bit size_t
@@ -609,7 +609,7 @@ private:
   bool m_relocates_levels = false;
   std::optional<Level_cells> m_level_cells;
   Array<double> m_weight;
-  double m_exponent = 1.5; // of the weights, see coverage_weight_exponent
+  double m_exponent = 0.; // of m_weight, set with it (see coverage_weight_exponent)
   double m_unit = 1.;
   std::int64_t m_largest_share = 0;
   Array<Index> m_nearest;

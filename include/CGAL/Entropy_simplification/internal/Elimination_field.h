@@ -70,10 +70,9 @@ bool estimate_normal_entropy(const Indexed_points& points, const Array<Index>& s
 
 // The feature strength at a coarse scale, for every point, to `strength`:
 // that of its nearest point of `coarse`, whose normals and entropies are
-// computed among the coarse points only, times coarse_strength_share.
-// Their neighbourhoods are wider, so
-// that a smooth curvature that scanner noise hides at the fine scale shows
-// there. With a large k this takes seconds, hence the progress: its three
+// computed among the coarse points only, times coarse_strength_share. Their
+// neighbourhoods are wider, so that a smooth curvature that scanner noise
+// hides at the fine scale shows there. With a large k this takes seconds, hence the progress: its three
 // passes count for a third each; returns false when it asked to stop.
 template <typename ConcurrencyTag, typename Progress>
 bool coarse_feature_strength(const Indexed_points& points, const Array<Index>& coarse, unsigned int k,
