@@ -306,7 +306,7 @@ inline std::vector<std::size_t> coarse_points(const std::vector<std::size_t>& kd
   return coarse;
 }
 
-// The coarse strength of every point: three quarters of that of its nearest
+// The coarse strength of every point: 0.7 times that of its nearest
 // coarse point (a coarse point is its own), against the coarse points' own
 // noise floor.
 inline std::vector<double> coarse_strength(const std::vector<Point>& points, const std::vector<std::size_t>& coarse,
@@ -325,7 +325,7 @@ inline std::vector<double> coarse_strength(const std::vector<Point>& points, con
     Neighbor nearest{ std::numeric_limits<double>::infinity(), points.size() };
     for (std::size_t c : coarse)
       nearest = (std::min)(nearest, Neighbor{ squared_distance(points[p], points[c]), c });
-    strength[p] = 0.75 * feature_strength(scale.entropy[nearest.second], floor);
+    strength[p] = 0.7 * feature_strength(scale.entropy[nearest.second], floor);
   }
   return strength;
 }
