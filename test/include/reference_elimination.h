@@ -977,30 +977,14 @@ inline void swap_at_boundary(const std::vector<Point>& points, const std::vector
   }
 }
 
-// At a boundary, then: each point the stage removed (in removal order) brings its
-// cell into that of the present point nearest it among those `adjacent` to
-// it, if any; then each cell with a present point keeps, among that
-// point and the stage's removed points of the cell, the one whose distances
-// to the cell's points, summed in input order, sum least (ties: the lowest
-// position), which takes the other's place in `stage_removed`.
-inline void relocate_boundary(const std::vector<Point>& points, const Adjacency& adjacent,
-                              std::vector<bool>& present, std::vector<std::size_t>& label,
-                              std::vector<std::size_t>& stage_removed)
+// Each cell with a present point keeps, among that point and the stage's
+// removed points of the cell, the one whose distances to the cell's points,
+// summed in input order, sum least (ties: the lowest position), which takes
+// the other's place in `stage_removed`.
+inline void keep_cell_medians(const std::vector<Point>& points, std::vector<bool>& present,
+                              const std::vector<std::size_t>& label, std::vector<std::size_t>& stage_removed)
 {
   const std::size_t n = points.size();
-  for (std::size_t r : stage_removed)
-  {
-    Neighbor nearest{ std::numeric_limits<double>::infinity(), n };
-    for (std::size_t q = 0; q < n; ++q)
-      if (present[q] && adjacent(r, q))
-        nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
-    if (nearest.second == n)
-      continue;
-    const std::size_t from = label[r], to = label[nearest.second];
-    for (std::size_t& l : label)
-      if (l == from)
-        l = to;
-  }
   const auto distance_sum = [&](std::size_t candidate, std::size_t cell) {
     double sum = 0.;
     for (std::size_t q = 0; q < n; ++q)
@@ -1023,6 +1007,30 @@ inline void relocate_boundary(const std::vector<Point>& points, const Adjacency&
     present[best.second] = true;
     *std::find(stage_removed.begin(), stage_removed.end(), best.second) = site;
   }
+}
+
+// At a boundary, then: each point the stage removed (in removal order) brings its
+// cell into that of the present point nearest it among those `adjacent` to
+// it, if any; then each cell keeps its median (keep_cell_medians).
+inline void relocate_boundary(const std::vector<Point>& points, const Adjacency& adjacent,
+                              std::vector<bool>& present, std::vector<std::size_t>& label,
+                              std::vector<std::size_t>& stage_removed)
+{
+  const std::size_t n = points.size();
+  for (std::size_t r : stage_removed)
+  {
+    Neighbor nearest{ std::numeric_limits<double>::infinity(), n };
+    for (std::size_t q = 0; q < n; ++q)
+      if (present[q] && adjacent(r, q))
+        nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
+    if (nearest.second == n)
+      continue;
+    const std::size_t from = label[r], to = label[nearest.second];
+    for (std::size_t& l : label)
+      if (l == from)
+        l = to;
+  }
+  keep_cell_medians(points, present, label, stage_removed);
 }
 
 // The removal order of the `present` points down to one, in stages that end
@@ -1059,7 +1067,9 @@ inline std::vector<std::size_t> eliminate_by_boundaries(const std::vector<Point>
 
 // The removal order of the `present` points down to one by the greedy
 // coverage elimination, in stages that end at the level boundaries, each
-// relocated, every present point adjacent to every removed one. Once at
+// relocated, every present point adjacent to every removed one, and
+// relocated a second time, each point in the cell of its nearest present
+// point, while every point counts. Once at
 // most 1% of the points (rounded up) are present, at the start or after a
 // relocation, the present points alone count from then on, each weighing
 // the sum of the weights of the points nearest it, its spread their mean
@@ -1099,6 +1109,13 @@ inline std::vector<std::size_t> coverage_eliminate_by_boundaries(const std::vect
     if (end > 1)
     {
       relocate_boundary(points, everywhere, present, label, stage_removed);
+      if (followers.weight.empty())
+      {
+        // every point still counts: its cell becomes that of its nearest
+        // present point, and each cell keeps its median once more
+        label = cells_of_present(points, present);
+        keep_cell_medians(points, present, label, stage_removed);
+      }
       represent_when_few();
     }
     removed.insert(removed.end(), stage_removed.begin(), stage_removed.end());

@@ -67,6 +67,10 @@ public:
   // The points in input order.
   const Array<Index>& by_input() const { return m_by_input; }
 
+  // Makes the cell of each point `i` that of `nearest[i]`, its nearest
+  // present point (itself when present), as a step of Lloyd's would.
+  void take_cells_of_nearest(const Array<Index>& nearest) { m_parent = nearest; }
+
   // Merges the cell of `removed` into that of `site`.
   void join(Index removed, Index site) { m_parent[cell_of(removed)] = cell_of(site); }
 
