@@ -106,9 +106,12 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
      the stage removed brings its cell into that of its nearest present
      neighbour. Each cell's point is then replaced by the cell's median
      among it and the cell's points that stage removed (the one whose
-     distances to the cell's input points sum least), so that the prefix
-     stands for the input points nearest it, as a direct call's relocation
-     makes its result do, while the prefixes stay nested;
+     distances to the cell's input points sum least). Above 1%, each
+     input point then joins the cell of its nearest present point, and
+     each cell's point is replaced by its median once more, as a direct
+     call's relocation takes two steps. So the prefix stands for the input
+     points nearest it, as a direct call's relocation makes its result do,
+     while the prefixes stay nested;
    - once at most 1% of the distinct points (rounded up) are present, from
      the start when `L` is that small, each present point stands for the
      input points nearest it: it weighs as much as they do together, and
