@@ -122,15 +122,16 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
      hold every input point.
 
    Without a level, every boundary is thus relocated: on the benchmark's
-   inputs, a prefix's mean distance to the input is at most 1.056 times
-   that of a direct call to its size from 1% to 50% of the points, and at
-   most 1.05 times but at 1% of one input (the user manual gives the
+   inputs, a prefix's mean distance to the input is at most 1.044 times
+   that of a direct call to its size from 1% to 50% of the points, and its
+   point-to-plane error at most 1.048 times (the user manual gives the
    figures); at 0.5% and 0.1%, where the kept points stand for the input
-   points, up to 1.056 and 1.078 times. With a level, the prefixes longer
-   than `L` are not relocated, and are up to 1.089 times worse. The whole
-   order costs 1.27 to 1.35 times a direct call to 1% of the points
-   without a level, and 1.04 to 1.12 times with the level at 1% (medians
-   on 100,000 and 1,000,000 points, with one thread and with two).
+   points, the mean distance is up to 1.055 and 1.057 times. With a level,
+   the prefixes longer than `L` are not relocated, and are up to 1.088
+   times worse. The whole order costs 1.42 to 1.51 times a direct call to
+   1% of the points without a level, and 1.06 to 1.10 times with the level
+   at 1% (medians on 100,000 and 1,000,000 points, with one thread and
+   with two).
 
    Coincident points are ranked last: their first copy in input order takes
    part in the run, and the other copies take the last ranks, the earliest
