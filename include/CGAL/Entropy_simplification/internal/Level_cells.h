@@ -49,10 +49,12 @@ inline std::size_t level_boundary_below(std::size_t present, std::size_t n)
 // a level boundary's stage brings its cell into that of its nearest present
 // neighbour; each cell is then represented by its median among the point
 // present and those removed in that stage, as a direct call's relocation
-// takes its cells' medians. The points removed before the stage stay
-// removed, so that the levels above keep their points, and each level's
-// points stand for the input points nearest them, as a direct call's
-// relocated ones do.
+// takes its cells' medians. While every input point follows the present
+// points, the cells then become those of the points' nearest present
+// points (take_cells_of_nearest), and their medians move in once more. The
+// points removed before the stage stay removed, so that the levels above
+// keep their points, and each level's points stand for the input points
+// nearest them, as a direct call's relocated ones do.
 class Level_cells
 {
 public:
