@@ -84,10 +84,23 @@ bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index
   });
 }
 
+// The first `count` points of `candidates` other than q that come before
+// `than` in the neighbour order of q: the scan's first points, kept while
+// they come before it.
+ESI::Array<ESI::Index> scan_nearest_before(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates,
+                                            ESI::Index q, std::size_t count, const ESI::Neighbor& than)
+{
+  ESI::Array<ESI::Index> result;
+  for (ESI::Index i : scan_nearest(p, candidates, q, count))
+    if (scan_holds_nearer(p, ESI::Array<ESI::Index>{ i }, q, than))
+      result.push_back(i);
+  return result;
+}
+
 // The searches of the coverage elimination and of the relocation against
 // the scans, `members` being the tree's points that are not removed: the
-// first one to four points, the first one from a bound, and whether a point
-// comes before another, that other being one
+// first one to four points, the first one from a bound, whether a point
+// comes before another and the first one to four that do, that other being one
 // of the four points of the cloud nearest the query (on the lattice, many
 // tie with the tree's points by distance, and only the input position
 // decides) or a point anywhere. The queries step by 2 over a tree of every
@@ -115,6 +128,13 @@ void require_few_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Poi
       const ESI::Neighbor than{ ESI::squared_distance(p.points[q], p.points[other]), p.input_position[other],
                                 other };
       REQUIRE(tree.holds_nearer(q, than) == scan_holds_nearer(p, members, q, than));
+      for (std::size_t count = 1; count <= 4; ++count)
+      {
+        ESI::Neighbor found[4];
+        const std::size_t found_count = tree.nearest_before(q, count, than, found);
+        REQUIRE(ids(ESI::Array<ESI::Neighbor>(found, found + found_count)) ==
+                scan_nearest_before(p, members, q, count, than));
+      }
     }
     // bounded from the start by a point of the tree, near or far, the
     // search for one point finds the first

@@ -360,12 +360,10 @@ private:
   }
 
   // Follows the present points after a relocation brought back the points
-  // `arrived` in place of others: only the points whose nearest or next
-  // present point left, or to which an arriving point is nearer than their
-  // next, search anew. The others keep their nearest and next, as
-  // follow_present() would find them, but not their spares, to which an
-  // arriving point may be nearer. An arriving point replaces its own
-  // nearest (its cell's site), so it searches anew too.
+  // `arrived` in place of others: each point from the points it followed
+  // and the arrivals (see first_with_arrivals), and anew only when these
+  // hold fewer than its nearest and next. The points whose nearest and next
+  // stay keep their share of its cost.
   template <typename ConcurrencyTag>
   void follow_relocated(const Array<Index>& arrived)
   {
@@ -373,20 +371,65 @@ private:
     build_tree<ConcurrencyTag>();
     const Point_tree arrivals(m_points, arrived.begin(), arrived.end());
     for_each_follower<ConcurrencyTag>([&](Index i) {
-      const Index next = next_of(i);
-      CGAL_assertion(!is_present(i) || m_nearest[i] == i || !is_present(m_nearest[i]));
-      const bool still_followed =
-        is_present(m_nearest[i]) && next != none_index && is_present(next) &&
-        !arrivals.holds_nearer(i, Neighbor{ squared_distance(m_points.points[i], m_points.points[next]),
-                                            m_points.input_position[next], next });
-      if (still_followed)
+      Index listed[1 + following];
+      if (!first_with_arrivals(i, arrivals, listed))
       {
-        std::fill_n(following_of(i) + 1, spares, none_index);
-        return;
+        unfollow(i);
+        follow_anew(i);
       }
-      unfollow(i);
-      follow_anew(i);
+      else if (listed[0] == m_nearest[i] && listed[1] == next_of(i))
+        std::copy_n(listed + 2, spares, following_of(i) + 1);
+      else
+      {
+        unfollow(i);
+        follow(i, listed[0], listed + 1);
+      }
     });
+  }
+
+  // Writes to `listed` `i`'s nearest present point (itself when present),
+  // its next and its spares, or as many of them as are known (none_index
+  // for the others), after a relocation brought back the points of
+  // `arrivals`; returns false when fewer than the nearest and the next are
+  // known. The points `i` follows are the first present points of its
+  // neighbour order up to the last of them, as only removals came since
+  // they were listed: the present ones among them and the arrivals that
+  // come before that last one are so again.
+  bool first_with_arrivals(Index i, const Point_tree& arrivals, Index* listed) const
+  {
+    const auto neighbor = [&](Index p) {
+      return Neighbor{ squared_distance(m_points.points[i], m_points.points[p]), m_points.input_position[p], p };
+    };
+    Index followed[1 + following] = { m_nearest[i] };
+    std::copy_n(m_following.data() + std::size_t(i) * following, following, followed + 1);
+    Neighbor known[1 + following], came[1 + following];
+    std::size_t known_count = 0;
+    Index last = none_index;
+    for (Index p : followed)
+      if (p != none_index && p != i)
+      {
+        last = p;
+        if (is_present(p))
+          known[known_count++] = neighbor(p);
+      }
+    if (last == none_index)
+      return false;
+    const std::size_t came_count = arrivals.nearest_before(i, 1 + following, neighbor(last), came);
+    std::size_t count = 0;
+    if (is_present(i))
+      listed[count++] = i;
+    // in the neighbour order, each point once: a point the stage removed,
+    // still followed as a spare, may come back
+    for (std::size_t a = 0, b = 0; count < 1 + following && (a < known_count || b < came_count);)
+      if (b == came_count || (a < known_count && !(came[b] < known[a])))
+      {
+        b += std::size_t(b < came_count && came[b].id == known[a].id);
+        listed[count++] = known[a++].id;
+      }
+      else
+        listed[count++] = came[b++].id;
+    std::fill(listed + count, listed + 1 + following, none_index);
+    return count >= 2;
   }
 
   void list_present()

@@ -102,6 +102,16 @@ public:
     best.resize(nearest(q, count, best.data()));
   }
 
+  // The same, among the points that come before the point `than` only. The
+  // search starts bounded by `than`, as in holds_nearer.
+  std::size_t nearest_before(Index q, std::size_t count, const Neighbor& than, Neighbor* best) const
+  {
+    Best_list_before list{ { count, best }, than };
+    if (!m_order.empty() && count > 0)
+      search_nearest(q, list);
+    return list.size;
+  }
+
   // The first point of the tree other than `q` in the neighbour order of
   // `q`, as `nearest(q, 1, ...)` finds it, with no list to keep. The tree
   // must hold a point other than `q`.
@@ -319,6 +329,18 @@ public:
       for (; slot > 0 && candidate < list[slot - 1]; --slot)
         list[slot] = list[slot - 1];
       list[slot] = candidate;
+    }
+  };
+
+  // A Best_list that only the points before `than` enter.
+  struct Best_list_before : Best_list
+  {
+    Neighbor than;
+    double bound() const { return size < count ? than.squared_distance : Best_list::bound(); }
+    void offer(const Neighbor& candidate)
+    {
+      if (candidate < than)
+        Best_list::offer(candidate);
     }
   };
 
