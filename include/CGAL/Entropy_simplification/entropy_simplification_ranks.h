@@ -130,10 +130,10 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    manual gives the figures); at 0.5% and 0.1%, where the kept points stand for the input
    points, the mean distance is up to 1.055 and 1.057 times. With a level,
    the prefixes longer than `L` are not relocated, and are up to 1.088
-   times worse. The whole order costs 1.42 to 1.51 times a direct call to
-   1% of the points without a level, and 1.06 to 1.10 times with the level
+   times worse. The whole order costs 1.28 to 1.31 times a direct call to
+   1% of the points without a level, and 1.02 to 1.05 times with the level
    at 1% (medians on 100,000 and 1,000,000 points, with one thread and
-   with two).
+   with two, on a shared machine whose runs vary by several hundredths).
 
    Coincident points are ranked last: their first copy in input order takes
    part in the run, and the other copies take the last ranks, the earliest

@@ -362,8 +362,8 @@ private:
   // Follows the present points after a relocation brought back the points
   // `arrived` in place of others: each point from the points it followed
   // and the arrivals (see first_with_arrivals), and anew only when these
-  // hold fewer than its nearest and next. The points whose nearest and next
-  // stay keep their share of its cost.
+  // hold fewer than its nearest and next. A point whose nearest and next
+  // stay keeps its share in its nearest's cost.
   template <typename ConcurrencyTag>
   void follow_relocated(const Array<Index>& arrived)
   {
@@ -506,7 +506,7 @@ private:
   // Follows, as `i`'s nearest and next, the first two of its nearest, next
   // and spares that are still present, and the spares after them, when two
   // are (or one, the last present point); searches anew otherwise. Only
-  // removals came since they were searched, so that they still come first
+  // removals came since they were listed, so that they still come first
   // among the present points.
   void follow_still_present(Index i)
   {
@@ -543,8 +543,8 @@ private:
   // present points and their medians move in once more: a second step of
   // Lloyd's, as a direct call's relocation takes two, which brought the
   // prefixes' mean distance at 1 to 50% from up to 1.056 times a direct
-  // call's to up to 1.044 on the benchmark's inputs, for about 12% more
-  // time for the whole order (manual: levels of detail). Below 1%, the
+  // call's to up to 1.044 on the benchmark's inputs, in about 8% of the
+  // whole order's time (manual: levels of detail). Below 1%, the
   // representatives alone know their nearest.
   template <typename ConcurrencyTag>
   Array<Index> remove_level(std::size_t boundary, std::size_t target)
@@ -671,10 +671,10 @@ private:
   Array<Index> m_nearest;
   Array<Index> m_given_nearest; // see set_present; read by the next run only
   // of each point, its next present point and then its spares, the present
-  // points that came after the next when they were searched (none_index
-  // where there were none, and when a relocation may have brought nearer
-  // ones): fewer searches, as a point searches again only once it lost
-  // all but one of them
+  // points that came after the next when they were listed (none_index
+  // where there were none, or where a relocation left fewer known; see
+  // first_with_arrivals): fewer searches, as a point searches again only
+  // once it lost all but one of them
   static constexpr std::size_t spares = 2;
   static constexpr std::size_t following = 1 + spares;
   Array<Index> m_following;
