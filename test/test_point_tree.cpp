@@ -72,35 +72,26 @@ ESI::Array<ESI::Index> ids(const ESI::Array<ESI::Neighbor>& best)
   return result;
 }
 
-// Whether some point of `candidates` other than q comes before `than` in
-// the neighbour order of q, by comparing them all with it.
-bool scan_holds_nearer(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates, ESI::Index q,
-                       const ESI::Neighbor& than)
-{
-  return std::any_of(candidates.begin(), candidates.end(), [&](ESI::Index i) {
-    const double d = ESI::squared_distance(p.points[q], p.points[i]);
-    return i != q && (d < than.squared_distance ||
-                      (d == than.squared_distance && p.input_position[i] < than.input_position));
-  });
-}
-
 // The first `count` points of `candidates` other than q that come before
 // `than` in the neighbour order of q: the scan's first points, kept while
-// they come before it.
+// their distance and input position come before its.
 ESI::Array<ESI::Index> scan_nearest_before(const ESI::Indexed_points& p, const ESI::Array<ESI::Index>& candidates,
                                             ESI::Index q, std::size_t count, const ESI::Neighbor& than)
 {
   ESI::Array<ESI::Index> result;
   for (ESI::Index i : scan_nearest(p, candidates, q, count))
-    if (scan_holds_nearer(p, ESI::Array<ESI::Index>{ i }, q, than))
+  {
+    const double d = ESI::squared_distance(p.points[q], p.points[i]);
+    if (d < than.squared_distance || (d == than.squared_distance && p.input_position[i] < than.input_position))
       result.push_back(i);
+  }
   return result;
 }
 
 // The searches of the coverage elimination and of the relocation against
 // the scans, `members` being the tree's points that are not removed: the
-// first one to four points, the first one from a bound, whether a point
-// comes before another and the first one to four that do, that other being one
+// first one to four points, the first one from a bound, the first one to
+// four that come before another point (or that point), that other being one
 // of the four points of the cloud nearest the query (on the lattice, many
 // tie with the tree's points by distance, and only the input position
 // decides) or a point anywhere. The queries step by 2 over a tree of every
@@ -125,9 +116,9 @@ void require_few_nearest_and_nearer(const ESI::Indexed_points& p, const ESI::Poi
     others.push_back(ESI::Index((q * 7919u) % p.size()));
     for (ESI::Index other : others)
     {
-      const ESI::Neighbor than{ ESI::squared_distance(p.points[q], p.points[other]), p.input_position[other],
-                                other };
-      REQUIRE(tree.holds_nearer(q, than) == scan_holds_nearer(p, members, q, than));
+      const ESI::Neighbor than = ESI::neighbor_of(p, q, other);
+      const ESI::Array<ESI::Index> first_before = scan_nearest_before(p, members, q, 1, than);
+      REQUIRE(tree.nearest_before(q, other) == (first_before.empty() ? other : first_before.front()));
       for (std::size_t count = 1; count <= 4; ++count)
       {
         ESI::Neighbor found[4];

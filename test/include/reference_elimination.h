@@ -1019,13 +1019,10 @@ inline void relocate_boundary(const std::vector<Point>& points, const Adjacency&
   const std::size_t n = points.size();
   for (std::size_t r : stage_removed)
   {
-    Neighbor nearest{ std::numeric_limits<double>::infinity(), n };
-    for (std::size_t q = 0; q < n; ++q)
-      if (present[q] && adjacent(r, q))
-        nearest = (std::min)(nearest, Neighbor{ squared_distance(points[r], points[q]), q });
-    if (nearest.second == n)
+    const std::size_t nearest = nearest_present(points, present, r, adjacent);
+    if (nearest == n)
       continue;
-    const std::size_t from = label[r], to = label[nearest.second];
+    const std::size_t from = label[r], to = label[nearest];
     for (std::size_t& l : label)
       if (l == from)
         l = to;

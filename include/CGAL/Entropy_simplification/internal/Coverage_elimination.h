@@ -397,11 +397,8 @@ private:
   // come before that last one are so again.
   bool first_with_arrivals(Index i, const Point_tree& arrivals, Index* listed) const
   {
-    const auto neighbor = [&](Index p) {
-      return Neighbor{ squared_distance(m_points.points[i], m_points.points[p]), m_points.input_position[p], p };
-    };
-    Index followed[1 + following] = { m_nearest[i] };
-    std::copy_n(m_following.data() + std::size_t(i) * following, following, followed + 1);
+    Index followed[1 + following];
+    followed_of(i, followed);
     Neighbor known[1 + following], came[1 + following];
     std::size_t known_count = 0;
     Index last = none_index;
@@ -410,11 +407,11 @@ private:
       {
         last = p;
         if (is_present(p))
-          known[known_count++] = neighbor(p);
+          known[known_count++] = neighbor_of(m_points, i, p);
       }
     if (last == none_index)
       return false;
-    const std::size_t came_count = arrivals.nearest_before(i, 1 + following, neighbor(last), came);
+    const std::size_t came_count = arrivals.nearest_before(i, 1 + following, neighbor_of(m_points, i, last), came);
     std::size_t count = 0;
     if (is_present(i))
       listed[count++] = i;
@@ -467,6 +464,14 @@ private:
   Index* following_of(Index i) { return m_following.data() + std::size_t(i) * following; }
   Index next_of(Index i) const { return m_following[std::size_t(i) * following]; }
 
+  // Writes to `followed` `i`'s nearest present point, then its next and
+  // its spares.
+  void followed_of(Index i, Index* followed) const
+  {
+    followed[0] = m_nearest[i];
+    std::copy_n(m_following.data() + std::size_t(i) * following, following, followed + 1);
+  }
+
   // Takes `i`'s share out of the cost of its nearest, before it follows
   // others.
   void unfollow(Index i) { m_cost[m_nearest[i]].fetch_sub(share(i), std::memory_order_relaxed); }
@@ -510,8 +515,8 @@ private:
   // among the present points.
   void follow_still_present(Index i)
   {
-    Index listed[1 + following] = { m_nearest[i] };
-    std::copy_n(following_of(i), following, listed + 1);
+    Index listed[1 + following];
+    followed_of(i, listed);
     std::size_t count = 0;
     for (Index p : listed)
       if (p != none_index && is_present(p))

@@ -233,7 +233,7 @@ private:
     Point_tree::Best_list best{ count, near.data(), m_tree->nearest(q, count, near.data()) };
     for (Index a : m_apart)
       if (a != q)
-        best.offer(Neighbor{ squared_distance(m_points.points[q], m_points.points[a]), m_points.input_position[a], a });
+        best.offer(neighbor_of(m_points, q, a));
     near.resize(best.size);
   }
 
@@ -292,8 +292,7 @@ public:
     {
       const Index j = m_neighbors[e];
       if (j != excluded && m_present[j])
-        best = (std::min)(best, Neighbor{ squared_distance(m_points.points[q], m_points.points[j]),
-                                          m_points.input_position[j], j });
+        best = (std::min)(best, neighbor_of(m_points, q, j));
     }
     return best;
   }
@@ -435,8 +434,7 @@ private:
   {
     if (site == none_index)
       return no_neighbor();
-    return Neighbor{ squared_distance(m_points.points[q], m_points.points[site]), m_points.input_position[site],
-                     site };
+    return neighbor_of(m_points, q, site);
   }
 
   // The heap holds again every point not present at least as far as the

@@ -41,6 +41,12 @@ struct Neighbor
   }
 };
 
+// The point `p` as a neighbour of the point `q`.
+inline Neighbor neighbor_of(const Indexed_points& points, Index q, Index p)
+{
+  return Neighbor{ squared_distance(points.points[q], points.points[p]), points.input_position[p], p };
+}
+
 // A tree of boxes over some of the indices of an Indexed_points, down to
 // leaves of at most `leaf_size` points. A node splits its indices where the
 // kd order (see sort_spatially) splits the interval of indices it covers, so
@@ -103,7 +109,7 @@ public:
   }
 
   // The same, among the points that come before the point `than` only. The
-  // search starts bounded by `than`, as in holds_nearer.
+  // search starts bounded by `than`, as in nearest_before(q, than).
   std::size_t nearest_before(Index q, std::size_t count, const Neighbor& than, Neighbor* best) const
   {
     Best_list_before list{ { count, best }, than };
@@ -122,21 +128,11 @@ public:
     return one.best.id;
   }
 
-  // Whether the tree holds a point other than `q` that comes before `than`
-  // in the neighbour order of `q`. The search starts bounded by `than`, so
-  // that it visits only the leaves near `q`.
-  bool holds_nearer(Index q, const Neighbor& than) const { return first_before(q, than) < than; }
-
   // The first point of the tree other than `q` in the neighbour order of
   // `q`, as nearest_one() finds it, when it comes before the point `than`,
-  // or `than` otherwise. The search starts bounded by `than`, as in
-  // holds_nearer.
-  Index nearest_before(Index q, Index than) const
-  {
-    return first_before(q, Neighbor{ squared_distance(m_points.points[q], m_points.points[than]),
-                                     m_points.input_position[than], than })
-      .id;
-  }
+  // or `than` otherwise. The search starts bounded by `than`, so that it
+  // visits only the leaves near `q`.
+  Index nearest_before(Index q, Index than) const { return first_before(q, neighbor_of(m_points, q, than)).id; }
 
   // Records the largest of `scales` in each node, for `within_reach_of_leaf`.
   // Children follow their parent in m_nodes: a backward pass sees them first.
