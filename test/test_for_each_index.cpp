@@ -4,7 +4,8 @@
 // The package's loop over indices: its blocks follow the time they take, so
 // that a loop of slow calls reports progress often and stops soon when asked,
 // and a loop of cheap calls goes in blocks that grow. The selection of the
-// count-th smallest value is std::nth_element's.
+// count-th smallest value is std::nth_element's. Large arrays touch their
+// pages at allocation under Parallel_tag only.
 
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 
@@ -18,6 +19,11 @@
 #include <random>
 #include <thread>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace ESI = CGAL::Entropy_simplification::internal;
 
@@ -119,3 +125,54 @@ TEST_CASE("Selection: the count-th smallest is nth_element's, within the sample'
   std::reverse(values.begin(), values.end());
   require_nth_smallest_as_std(values);
 }
+
+#ifdef __linux__
+namespace {
+
+// How many pages of the storage of `array` are resident, as mincore() says.
+template <typename T>
+std::size_t resident_pages(const ESI::Array<T>& array)
+{
+  const std::size_t page = std::size_t(sysconf(_SC_PAGESIZE));
+  const auto first = reinterpret_cast<std::uintptr_t>(array.data()) / page * page;
+  const auto beyond = reinterpret_cast<std::uintptr_t>(array.data() + array.capacity());
+  std::vector<unsigned char> in_core((beyond - first + page - 1) / page);
+  REQUIRE(mincore(reinterpret_cast<void*>(first), beyond - first, in_core.data()) == 0);
+  return std::size_t(std::count_if(in_core.begin(), in_core.end(), [](unsigned char c) { return (c & 1) != 0; }));
+}
+
+} // namespace
+
+TEST_CASE("Arrays: a large array's pages are touched at allocation under Parallel_tag only", "[kernels]")
+{
+  // 64 MiB: above the largest size glibc takes from its heap, so that the
+  // storage is new to the process and no page is resident before a write
+  constexpr std::size_t count = std::size_t(8) << 20;
+  const std::size_t pages = count * sizeof(double) / std::size_t(sysconf(_SC_PAGESIZE));
+  REQUIRE_FALSE(ESI::touches_pages_in_parallel());
+  {
+    const ESI::First_touch_scope<CGAL::Sequential_tag> sequential;
+    ESI::Array<double> untouched;
+    untouched.reserve(count);
+    CHECK(resident_pages(untouched) < pages / 100);
+  }
+  {
+    const ESI::First_touch_scope<CGAL::Parallel_tag> parallel;
+    CHECK(ESI::touches_pages_in_parallel());
+    ESI::Array<double> touched;
+    touched.reserve(count);
+#ifdef CGAL_LINKED_WITH_TBB
+    CHECK(resident_pages(touched) >= pages);
+#endif
+    // the values are the ones written after the touch
+    touched.assign(count, 0.5);
+    CHECK(std::all_of(touched.begin(), touched.end(), [](double v) { return v == 0.5; }));
+    {
+      const ESI::First_touch_scope<CGAL::Sequential_tag> nested;
+      CHECK_FALSE(ESI::touches_pages_in_parallel());
+    }
+    CHECK(ESI::touches_pages_in_parallel());
+  }
+  CHECK_FALSE(ESI::touches_pages_in_parallel());
+}
+#endif

@@ -167,6 +167,7 @@ bool compute_entropy_importance(PointRange& points, unsigned int k, ImportanceMa
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
+  const ES::First_touch_scope<ConcurrencyTag> first_touch;
   ES::Array<ES::Working_point> input = ES::working_points(points, np);
   const std::size_t n = input.size();
   if (n == 0)

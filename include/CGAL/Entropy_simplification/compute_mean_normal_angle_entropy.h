@@ -98,6 +98,7 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
                                                internal_np::geom_traits_t>::value,
                 "compute_mean_normal_angle_entropy() reads only the named parameters point_map and geom_traits");
 
+  const ES::First_touch_scope<ConcurrencyTag> first_touch;
   ES::Array<ES::Working_point> input = ES::working_points(points, np);
   if (k < ES::minimum_k(options.normal_estimation) || input.size() < std::size_t(k) + 1)
     throw std::invalid_argument("compute_mean_normal_angle_entropy: k = " + std::to_string(k) +

@@ -270,6 +270,7 @@ entropy_simplify_point_set(PointRange& points, unsigned int k,
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
+  const ES::First_touch_scope<ConcurrencyTag> first_touch;
   ES::Array<ES::Working_point> input = ES::working_points(points, np);
   const std::size_t n = input.size();
   if (n == 0)

@@ -197,6 +197,7 @@ measure_simplification_quality(const InputRange& input, const KeptRange& kept,
                                                  internal_np::geom_traits_t>::value,
                 "measure_simplification_quality() reads only the named parameters point_map and geom_traits");
 
+  const ES::First_touch_scope<ConcurrencyTag> first_touch;
   const ES::Array<ES::Working_point> input_points = ES::working_points(input, input_np);
   const ES::Array<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
   if (input_points.empty() || kept_points.empty())

@@ -6,11 +6,102 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ARRAY_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_ARRAY_H
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <cstddef>
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
+
+// Whether the calling thread's large allocations touch their pages in
+// parallel (see First_touch_scope).
+inline bool& touches_pages_in_parallel()
+{
+  static thread_local bool in_parallel = false;
+  return in_parallel;
+}
+
+// Writes a byte in each page of `bytes` of new storage, in parallel, when the
+// calling thread may and the storage is large. Memory a process gets from the
+// system costs a page fault per page at its first write: on the benchmark's
+// virtual machine about 11 microseconds per 4 KiB page when the system has
+// not used it recently, so that a direct call on 1,000,000 points paid about
+// 0.5 s of its 2.7 s there, mostly while one thread copied the points and
+// built the arrays that the parallel stages then fill (see the manual).
+inline void touch_pages(void* storage, std::size_t bytes)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  constexpr std::size_t page = 4096, large = std::size_t(1) << 20;
+  if (bytes < large || !touches_pages_in_parallel())
+    return;
+  volatile char* first = static_cast<char*>(storage);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, (bytes + page - 1) / page, 64),
+                    [first](const tbb::blocked_range<std::size_t>& pages) {
+                      for (std::size_t p = pages.begin(); p != pages.end(); ++p)
+                        first[p * page] = 0;
+                    });
+#else
+  (void)storage;
+  (void)bytes;
+#endif
+}
+
+// std::allocator, with the pages of large arrays touched in parallel (see
+// touch_pages).
+template <typename T>
+struct First_touch_allocator
+{
+  using value_type = T;
+
+  First_touch_allocator() = default;
+  template <typename U>
+  First_touch_allocator(const First_touch_allocator<U>&) noexcept
+  {}
+
+  T* allocate(std::size_t n)
+  {
+    T* storage = std::allocator<T>().allocate(n);
+    touch_pages(storage, n * sizeof(T));
+    return storage;
+  }
+  void deallocate(T* storage, std::size_t n) noexcept { std::allocator<T>().deallocate(storage, n); }
+
+  template <typename U>
+  bool operator==(const First_touch_allocator<U>&) const noexcept
+  {
+    return true;
+  }
+  template <typename U>
+  bool operator!=(const First_touch_allocator<U>&) const noexcept
+  {
+    return false;
+  }
+};
+
+// While it lives, the calling thread's large arrays touch their pages in
+// parallel under Parallel_tag, and not under Sequential_tag: a public
+// function creates one first.
+template <typename ConcurrencyTag>
+class First_touch_scope
+{
+public:
+  First_touch_scope() { touches_pages_in_parallel() = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value; }
+  ~First_touch_scope() { touches_pages_in_parallel() = m_before; }
+  First_touch_scope(const First_touch_scope&) = delete;
+  First_touch_scope& operator=(const First_touch_scope&) = delete;
+
+private:
+  const bool m_before = touches_pages_in_parallel();
+};
 
 // Every array of the package, nearly all of them a value per point. They
 // were once mapped in transparent huge pages, to pay one page fault where
@@ -20,7 +111,7 @@ namespace internal {
 // pages are mostly recently freed ones: the default mode on 10^7 points
 // took 30 to 40 s with huge pages and 26 to 28 s without (runs in turn).
 template <typename T>
-using Array = std::vector<T>;
+using Array = std::vector<T, First_touch_allocator<T> >;
 
 } // namespace internal
 } // namespace Entropy_simplification

@@ -8,6 +8,8 @@
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_FOR_EACH_INDEX_H
 
+#include <CGAL/Entropy_simplification/internal/Array.h>
+
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
@@ -150,7 +152,7 @@ auto sampled_bracket(std::size_t n, const Value& value, std::size_t count, const
 // particular order, and in `below` how many lie below `low`; counted and
 // listed a chunk at a time, in parallel with CGAL::Parallel_tag.
 template <typename ConcurrencyTag, typename Value, typename T, typename Less>
-std::vector<T> values_within(std::size_t n, const Value& value, const T& low, const T& high, const Less& less,
+Array<T> values_within(std::size_t n, const Value& value, const T& low, const T& high, const Less& less,
                              std::size_t& below)
 {
   constexpr std::size_t chunk = std::size_t(1) << 14;
@@ -173,7 +175,7 @@ std::vector<T> values_within(std::size_t n, const Value& value, const T& low, co
     },
     [](std::size_t) { return true; });
   below = 0;
-  std::vector<T> within;
+  Array<T> within;
   for (std::size_t c = 0; c < chunks; ++c)
   {
     below += below_in[c];
@@ -196,7 +198,7 @@ auto nth_smallest(std::size_t n, const Value& value, std::size_t count, const Le
   using T = std::decay_t<decltype(value(std::size_t(0)))>;
   const std::pair<T, T> bracket = sampled_bracket(n, value, count, less);
   std::size_t below = 0;
-  std::vector<T> within = values_within<ConcurrencyTag>(n, value, bracket.first, bracket.second, less, below);
+  Array<T> within = values_within<ConcurrencyTag>(n, value, bracket.first, bracket.second, less, below);
   if (count <= below || count > below + within.size())
   {
     within.resize(n);
