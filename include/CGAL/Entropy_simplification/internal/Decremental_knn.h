@@ -77,13 +77,13 @@ public:
   {
     const std::size_t n = m_points.size();
     const std::size_t part = (std::size_t(1) << 22) / m_capacity + 1;
-    m_candidates.reserve(n * m_capacity);
-    m_reverse.reserve(n * m_block);
+    reserve_untouched(m_candidates, n * m_capacity);
+    reserve_untouched(m_reverse, n * m_block);
     return for_each_index_growing<ConcurrencyTag>(
-             n, part, [&](std::size_t points) { m_candidates.resize(points * m_capacity); },
+             n, part, [&](std::size_t points) { grow_touched(m_candidates, points * m_capacity); },
              [&](std::size_t i) { fill_candidates(Index(i)); }, share_of_progress(n, 0., 0.8, progress)) &&
            for_each_index_growing<CGAL::Sequential_tag>(
-             n, part, [&](std::size_t points) { m_reverse.resize(points * m_block); }, [](std::size_t) {},
+             n, part, [&](std::size_t points) { grow_touched(m_reverse, points * m_block); }, [](std::size_t) {},
              share_of_progress(n, 0.8, 0.1, progress)) &&
            for_each_index<CGAL::Sequential_tag>(
              n,

@@ -523,7 +523,7 @@ private:
 
   const Indexed_points& m_points;
   Array<Index> m_order; // the tree's points in index order, each node's contiguous
-  Array<Node> m_nodes;
+  Growing_array<Node> m_nodes; // often more than the room reserved for them
   Array<char> m_removed; // empty until a removal
   Array<double> m_largest_scale; // of each node, for within_reach_of_leaf
 };
@@ -537,10 +537,10 @@ bool nearest_neighbor_table(const Point_tree& tree, const Array<Index>& queries,
                             Array<Index>& table, const Progress& progress)
 {
   table.clear();
-  table.reserve(queries.size() * std::size_t(k));
+  reserve_untouched(table, queries.size() * std::size_t(k));
   return for_each_index_growing<ConcurrencyTag>(
     queries.size(), (std::max)(std::size_t(1), (std::size_t(1) << 22) / k),
-    [&](std::size_t rows) { table.resize(rows * k); },
+    [&](std::size_t rows) { grow_touched(table, rows * k); },
     [&](std::size_t r) {
       thread_local Array<Neighbor> best;
       tree.nearest(queries[r], k, best);
