@@ -17,7 +17,6 @@
 #include <cstddef>
 #include <memory>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -126,9 +125,8 @@ using Array = std::vector<T, First_touch_allocator<T> >;
 template <typename T>
 void reserve_untouched(Array<T>& array, std::size_t count)
 {
-  const bool in_parallel = std::exchange(touches_pages_in_parallel(), false);
+  const First_touch_scope<CGAL::Sequential_tag> untouched;
   array.reserve(count);
-  touches_pages_in_parallel() = in_parallel;
 }
 
 // Resizes `array`, reserved by reserve_untouched, to `count` elements, the
