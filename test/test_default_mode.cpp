@@ -271,6 +271,7 @@ reference::Terms reference_terms(const ESI::Default_mode_terms& t)
   reference::Terms r;
   r.coarse_scale = t.coarse_scale;
   r.feature_budget = t.feature_budget;
+  r.strong_features_first = t.strong_features_first;
   r.relocation = t.relocation;
   r.medians = t.medians;
   r.radius_bound = t.radius_bound;
@@ -298,7 +299,7 @@ TEST_CASE("Default mode: with each term switched off, the removal order equals t
   const std::vector<Setting> settings = { Setting{ board_and_ball(), 5 }, Setting{ fold(800, 0.003, 12), 5 },
                                           Setting{ test_clouds::wavy_surface(600, 0.01, 4), 8 } };
   std::vector<ESI::Term_switched_off> ablation = ESI::each_term_switched_off();
-  REQUIRE(ablation.size() == 7);
+  REQUIRE(ablation.size() == 8);
   ablation.insert(ablation.begin(), { "none", ESI::Default_mode_terms() });
   std::vector<std::vector<std::size_t> > with_all_terms;
   for (const ESI::Term_switched_off& off : ablation)

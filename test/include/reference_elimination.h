@@ -50,6 +50,7 @@ struct Terms
   bool coverage_elimination = true; // the greedy coverage elimination, not Yuksel's
   bool coarse_scale = true;   // the strength is the greater of the two scales'
   bool feature_budget = true; // the weight is lowered where features cover much
+  bool strong_features_first = true; // above 35% present, the square of the strength
   bool relocation = true;     // the kept points are relocated
   bool medians = true;        // each cell keeps its median
   bool radius_bound = true;   // within the radius bound
@@ -366,6 +367,7 @@ struct Field
   std::size_t coarse_count = 0; // 0 when the cloud is too small for the coarse scale
   double floor = 0.;            // the noise floor of the fine scale
   double weight = 0.;           // the feature weight after the budget
+  bool strong_features_first = true; // see coverage_weights
 };
 
 inline Field feature_field(const std::vector<Point>& points, unsigned int k, const ES::Options& options,
@@ -408,6 +410,7 @@ inline Field feature_field(const std::vector<Point>& points, unsigned int k, con
   }
   field.weight = terms.feature_budget ? budgeted_weight(options.feature_weight, feature_area, total_area)
                                       : options.feature_weight;
+  field.strong_features_first = terms.strong_features_first;
   const double typical_area = median(area);
   for (std::size_t p = 0; p < n; ++p)
   {
@@ -571,12 +574,29 @@ inline double coverage_exponent(std::size_t count, std::size_t n)
 }
 
 // The weight of each point in the greedy coverage elimination while `count`
-// of the points are present: (smallest scale / its scale)^(2e).
+// of the points are present: (smallest scale / its scale)^(2e), that is
+// (1 + w s)^e over the greatest; while more than 35% are present (and the
+// weight is not 0), (1 + w s^2)^e over the greatest instead, w s being
+// 1 / scale^2 - 1, as the scales agree with the library's to the bit where
+// the strengths may not.
 inline std::vector<double> coverage_weights(const Field& field, std::size_t count)
 {
-  const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
   const double e = coverage_exponent(count, field.scale.size());
   std::vector<double> weight;
+  if (field.strong_features_first && field.weight > 0. && double(count) / double(field.scale.size()) > 0.35)
+  {
+    double greatest = 0.;
+    for (double s : field.scale)
+    {
+      const double w_s = 1. / (s * s) - 1.;
+      weight.push_back(1. + w_s * w_s / field.weight);
+      greatest = (std::max)(greatest, weight.back());
+    }
+    for (double& w : weight)
+      w = std::pow(w / greatest, e);
+    return weight;
+  }
+  const double smallest = *std::min_element(field.scale.begin(), field.scale.end());
   for (double s : field.scale)
     weight.push_back(std::pow(smallest / s, 2. * e));
   return weight;

@@ -35,6 +35,14 @@ namespace CGAL {
 namespace Entropy_simplification {
 namespace internal {
 
+// Whether more than 35% of the `n` points are present: the first stage of
+// the weights (see coverage_weight_exponent and coverage_weights).
+inline bool most_points_present(std::size_t present, std::size_t n)
+{
+  // in 64 bits, as 100 times 2^32 points would wrap a 32-bit size_t
+  return 100 * std::uint64_t(present) > 35 * std::uint64_t(n);
+}
+
 // The exponent of (1 + w s) in the weights (see coverage_weights) while
 // `present` of `n` points are present. Where each present point stands for
 // many input points, removing it costs its weight times about the cube of
@@ -52,11 +60,10 @@ namespace internal {
 // prefixes follow the same weights as direct calls.
 inline double coverage_weight_exponent(std::size_t present, std::size_t n)
 {
-  // in 64 bits, as 100 times 2^32 points would wrap a 32-bit size_t
-  const std::uint64_t hundredfold = 100 * std::uint64_t(present);
-  if (hundredfold > 35 * std::uint64_t(n))
+  if (most_points_present(present, n))
     return 1.1;
-  return hundredfold > 20 * std::uint64_t(n) ? 1.35 : 1.6;
+  // in 64 bits, as 100 times 2^32 points would wrap a 32-bit size_t
+  return 100 * std::uint64_t(present) > 20 * std::uint64_t(n) ? 1.35 : 1.6;
 }
 
 // The weight of each point in the sum of distances: (1 + w s)^e for a
@@ -65,13 +72,38 @@ inline double coverage_weight_exponent(std::size_t present, std::size_t n)
 // that it is at most 1. Where a surface weighs c times more, the sum is
 // least with about c^(2/3) times more points per area (the density of a
 // weighted k-median on a surface) when each point stands for many.
+//
+// With `squared_strength`, (1 + w s^2)^e instead, w s taken from the scale
+// (1 / scale^2 - 1) so that it is the same whatever computed the scale: a
+// strong feature (s near 1) weighs as much, a weak one far less. It is for
+// the first stage, while most points are present: there a kept point stands
+// for two or three input points and the density grows about as the square
+// of the weight, so that weak features, a noisy scan's or the coarse
+// scale's wide bands, took points from the flat regions that the mean
+// distance misses most (manual: the square of the strength).
 template <typename ConcurrencyTag>
-Array<double> coverage_weights(const Elimination_field& field, double exponent)
+Array<double> coverage_weights(const Elimination_field& field, double exponent, bool squared_strength)
 {
   Array<double> weight(field.scale.size());
-  const double smallest = field.scale.empty() ? 1. : *std::min_element(field.scale.begin(), field.scale.end());
+  if (!squared_strength || !(field.feature_weight > 0.))
+  {
+    const double smallest =
+      field.scale.empty() ? 1. : *std::min_element(field.scale.begin(), field.scale.end());
+    for_each_index<ConcurrencyTag>(
+      weight.size(), [&](std::size_t i) { weight[i] = std::pow(smallest / field.scale[i], 2. * exponent); },
+      [](std::size_t) { return true; });
+    return weight;
+  }
   for_each_index<ConcurrencyTag>(
-    weight.size(), [&](std::size_t i) { weight[i] = std::pow(smallest / field.scale[i], 2. * exponent); },
+    weight.size(),
+    [&](std::size_t i) {
+      const double feature = 1. / (field.scale[i] * field.scale[i]) - 1.; // w s
+      weight[i] = 1. + feature * feature / field.feature_weight;
+    },
+    [](std::size_t) { return true; });
+  const double greatest = weight.empty() ? 1. : *std::max_element(weight.begin(), weight.end());
+  for_each_index<ConcurrencyTag>(
+    weight.size(), [&](std::size_t i) { weight[i] = std::pow(weight[i] / greatest, exponent); },
     [](std::size_t) { return true; });
   return weight;
 }
@@ -273,7 +305,7 @@ private:
   {
     const std::size_t n = m_points.size();
     m_exponent = coverage_weight_exponent(m_count, n);
-    m_weight = coverage_weights<ConcurrencyTag>(m_field, m_exponent);
+    m_weight = weights_for_present<ConcurrencyTag>();
     m_unit = share_unit(m_field, n);
     m_largest_share = largest_share(n);
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);
@@ -293,12 +325,20 @@ private:
       return;
     CGAL_precondition(m_followers.empty());
     m_exponent = exponent;
-    m_weight = coverage_weights<ConcurrencyTag>(m_field, exponent);
+    m_weight = weights_for_present<ConcurrencyTag>();
     for_each_index<ConcurrencyTag>(
       m_cost.size(), [&](std::size_t i) { m_cost[i].store(0, std::memory_order_relaxed); },
       [](std::size_t) { return true; });
     for_each_follower<ConcurrencyTag>(
       [&](Index i) { m_cost[m_nearest[i]].fetch_add(share(i), std::memory_order_relaxed); });
+  }
+
+  // The weights of m_exponent, for the points present (see coverage_weights).
+  template <typename ConcurrencyTag>
+  Array<double> weights_for_present() const
+  {
+    return coverage_weights<ConcurrencyTag>(
+      m_field, m_exponent, m_terms.strong_features_first && most_points_present(m_count, m_points.size()));
   }
 
   // Whether at most 1% of the points are present, below which a ranking's

@@ -31,6 +31,10 @@ struct Default_mode_terms
   // the feature weight is lowered where features cover much of the area
   // (see budgeted_feature_weight)
   bool feature_budget = true;
+  // while more than 35% of the points are present, the greedy coverage
+  // elimination weighs with the square of the feature strength (see
+  // coverage_weights), so that weak features take fewer points
+  bool strong_features_first = true;
   // the kept points are relocated in Lloyd's manner (see relocate_within_input);
   // a ranking's level boundaries are relocated either way (see Level_cells)
   bool relocation = true;
@@ -67,6 +71,7 @@ inline std::vector<Term_switched_off> each_term_switched_off()
   };
   off("coarse scale of the feature strength", &Default_mode_terms::coarse_scale);
   off("feature budget", &Default_mode_terms::feature_budget);
+  off("square of the strength while most points are present", &Default_mode_terms::strong_features_first);
   off("relocation", &Default_mode_terms::relocation);
   off("medians (members nearest the centroids)", &Default_mode_terms::medians);
   off("radius bound of the medians", &Default_mode_terms::radius_bound);

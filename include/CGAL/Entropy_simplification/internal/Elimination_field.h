@@ -35,6 +35,8 @@ struct Elimination_field
   // the area the points sample, each point's share weighted by the density
   // its scale asks for (1 / scale^2)
   double effective_area = 0.;
+  // the feature weight w after the budget (see budgeted_feature_weight)
+  double feature_weight = 0.;
 };
 
 // The entropy of the normals of each point of `subset`'s neighbourhood,
@@ -180,6 +182,7 @@ void set_scales(const Indexed_points& points, const Array<double>& area, const A
     terms.feature_budget ? budgeted_feature_weight(feature_weight, feature_area, total_area) : feature_weight;
   const double typical_area = median(area);
 
+  field.feature_weight = weight;
   field.scale.resize(n);
   Array<double> weighted_area(n);
   for_each_index<ConcurrencyTag>(
