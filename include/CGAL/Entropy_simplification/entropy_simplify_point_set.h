@@ -107,7 +107,9 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    the area, so that features keep up to about `1 + w` times the density of
    flat regions: `e` is 1.1 while more than 35% of the distinct points are
    kept, 1.35 while more than 20%, and 1.6 below, as a weight buys a
-   greater density where each kept point stands for fewer input points.
+   greater density where each kept point stands for fewer input points;
+   while more than 35% are kept, `(1 + w s^2)^e`, so that weak features
+   take fewer points from the flat regions there.
    The feature strength is the variation of the normals of `p` and `N(p)`, the entropy of the eigenvalues of their
    orientation tensor, independent of their orientation and of any
    reference plane, measured against the cloud's own noise (its median), at
