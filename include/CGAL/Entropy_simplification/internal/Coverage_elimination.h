@@ -316,7 +316,9 @@ private:
   // Weighs the points with the exponent for the points present, when it
   // changed, and sums the costs anew. The representatives' weights, below
   // 1%, are sums of input points' (see follow_representatives_when_few),
-  // whose exponent no longer changes there.
+  // whose exponent no longer changes there. The old weights go before the
+  // new ones come: both at once were the program's peak of memory on
+  // 10,000,000 points, 1413 MiB against 1408 without them.
   template <typename ConcurrencyTag>
   void weigh_for_present()
   {
@@ -325,6 +327,7 @@ private:
       return;
     CGAL_precondition(m_followers.empty());
     m_exponent = exponent;
+    Array<double>().swap(m_weight);
     m_weight = weights_for_present<ConcurrencyTag>();
     for_each_index<ConcurrencyTag>(
       m_cost.size(), [&](std::size_t i) { m_cost[i].store(0, std::memory_order_relaxed); },
