@@ -126,9 +126,9 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    Without a level, every boundary is thus relocated: on the benchmark's
    inputs, a prefix's mean distance to the input is at most 1.045 times
    that of a direct call to its size at 1, 5, 10, 20 and 50% of the
-   points, and its point-to-plane error at most 1.053 times, on a noisy
-   scan, where that error moves by several hundredths with few points
-   (the user manual gives the figures); at 0.5% and 0.1%, where the kept
+   points, and its point-to-plane error at most 1.053 times (radar at 5%,
+   a noisy scan whose ratios move by several hundredths when a handful of
+   points change; the user manual gives the figures); at 0.5% and 0.1%, where the kept
    points stand for the input points, the mean distance is up to 1.049 and
    1.064 times. With a level, the prefixes longer than `L` are not
    relocated, and are up to 1.089 times worse. The whole order costs 1.28
