@@ -15,7 +15,6 @@
 #include <CGAL/Entropy_simplification/experiment_I_replica.h>
 #include <CGAL/Entropy_simplification/internal/Decremental_knn.h>
 #include <CGAL/Entropy_simplification/internal/Distinct_points.h>
-#include <CGAL/Entropy_simplification/internal/First_neighbors.h>
 #include <CGAL/Entropy_simplification/internal/Nearest_present_points.h>
 #include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
@@ -63,21 +62,6 @@ ESI::Array<ESI::Index> scan_nearest(const ESI::Indexed_points& p, const ESI::Arr
   for (std::size_t r = 0; r < first; ++r)
     result.push_back(std::get<2>(keyed[r]));
   return result;
-}
-
-// The k nearest neighbours of every point by the scan, those of point q at
-// [q * k].
-ESI::Array<ESI::Index> scan_knn(const ESI::Indexed_points& p, unsigned int k)
-{
-  ESI::Array<ESI::Index> everyone(p.size());
-  std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
-  ESI::Array<ESI::Index> knn;
-  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
-  {
-    const ESI::Array<ESI::Index> row = scan_nearest(p, everyone, q, k);
-    knn.insert(knn.end(), row.begin(), row.end());
-  }
-  return knn;
 }
 
 ESI::Array<ESI::Index> ids(const ESI::Array<ESI::Neighbor>& best)
@@ -190,18 +174,6 @@ TEST_CASE("Point tree: nearest neighbours in the package's order, before and aft
     tree.nearest(q, 100, best); // more than are present
     REQUIRE(ids(best) == scan_nearest(p, present, q, 100));
     REQUIRE(tree.nearest_one(q) == scan_nearest(p, present, q, 1).front());
-  }
-  require_few_nearest_and_nearer(p, tree, present);
-  // the removed points dropped, the tree holds the present ones alone, and
-  // its searches find the same
-  tree.drop_removed<CGAL::Parallel_tag>();
-  ESI::Array<ESI::Index> sorted_present = present;
-  std::sort(sorted_present.begin(), sorted_present.end());
-  REQUIRE(tree.indices() == sorted_present);
-  for (ESI::Index q = 0; q < ESI::Index(p.size()); q += 7)
-  {
-    tree.nearest(q, 10, best);
-    REQUIRE(ids(best) == scan_nearest(p, present, q, 10));
   }
   require_few_nearest_and_nearer(p, tree, present);
   // fewer points than asked for: all those other than the query
@@ -476,7 +448,12 @@ TEST_CASE("Neighbor offsets: the present points among the first neighbours are t
     const std::size_t n = p->size();
     ESI::Array<ESI::Index> everyone(n);
     std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
-    const ESI::Array<ESI::Index> knn = scan_knn(*p, k);
+    ESI::Array<ESI::Index> knn;
+    for (ESI::Index q = 0; q < ESI::Index(n); ++q)
+    {
+      const ESI::Array<ESI::Index> row = scan_nearest(*p, everyone, q, k);
+      knn.insert(knn.end(), row.begin(), row.end());
+    }
     const ESI::Neighbor_offsets offsets(knn, k);
     ESI::Portable_random random(31);
     std::size_t answered = 0, declined = 0, answered_of_all = 0;
@@ -531,41 +508,6 @@ TEST_CASE("Neighbor offsets: the present points among the first neighbours are t
   }
 }
 
-// What an elimination keeps of the neighbour table, offsets and the columns
-// of the points they miss, gives each point's first neighbours as the table
-// does: on points in kd order, whose offsets miss few, and on points out of
-// it, whose offsets miss most. Asked for more than k, it keeps nothing.
-TEST_CASE("First neighbours: offsets and the columns of the points they miss give the table's first", "[point tree]")
-{
-  const ESI::Indexed_points unsorted = test_points();
-  const ESI::Indexed_points sorted = ESI::sort_spatially(unsorted.points);
-  constexpr unsigned int k = 10;
-  for (const ESI::Indexed_points* p : { &sorted, &unsorted })
-  {
-    const std::size_t n = p->size();
-    const ESI::Array<ESI::Index> knn = scan_knn(*p, k);
-    for (std::size_t count : { 1, 3, 4, 10 })
-    {
-      const ESI::First_neighbors first = ESI::first_neighbors<CGAL::Parallel_tag>(knn, k, count);
-      REQUIRE(first.count == count);
-      REQUIRE(first.columns.size() == first.missed.size() * count);
-      REQUIRE(std::is_sorted(first.missed.begin(), first.missed.end()));
-      for (ESI::Index q = 0; q < ESI::Index(n); ++q)
-      {
-        ESI::Index found[10];
-        first.first_of(q, found);
-        REQUIRE(ESI::Array<ESI::Index>(found, found + count) ==
-                ESI::Array<ESI::Index>(knn.begin() + q * k, knn.begin() + q * k + count));
-      }
-      // both ways are taken: in kd order, the offsets hold the first four
-      // of most points; out of it, of few
-      if (count <= 4)
-        CHECK((p == &sorted ? first.missed.size() < n / 2 : first.missed.size() > n / 2));
-    }
-    CHECK(ESI::first_neighbors<CGAL::Sequential_tag>(knn, k, k + 1).count == 0);
-  }
-}
-
 // The offsets of one byte end at 127 either way, -128 marking the first
 // that does not fit: points on a line, far apart, but for point 0, whose
 // nearest are points 127 and 128, and point 255, whose nearest is 127. And
@@ -582,8 +524,15 @@ TEST_CASE("Neighbor offsets: the offsets that fit in a byte, and the first that 
   p.points[127] = ESI::Working_point(1., 0., 0.);
   p.points[128] = ESI::Working_point(-2., 0., 0.);
   p.points[255] = ESI::Working_point(1.5, 0., 0.);
+  ESI::Array<ESI::Index> everyone(p.size());
+  std::iota(everyone.begin(), everyone.end(), ESI::Index(0));
   constexpr unsigned int k = 3;
-  const ESI::Array<ESI::Index> knn = scan_knn(p, k);
+  ESI::Array<ESI::Index> knn;
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
+  {
+    const ESI::Array<ESI::Index> row = scan_nearest(p, everyone, q, k);
+    knn.insert(knn.end(), row.begin(), row.end());
+  }
   REQUIRE(ESI::Array<ESI::Index>(knn.begin(), knn.begin() + 3) == ESI::Array<ESI::Index>{ 127, 255, 128 });
   REQUIRE(knn[255 * k] == 127);
   const ESI::Neighbor_offsets offsets(knn, k);
@@ -601,7 +550,12 @@ TEST_CASE("Neighbor offsets: the offsets that fit in a byte, and the first that 
   // of k = 20 neighbours, the first 16 are kept: those of point 150 go
   // 149, 151, 148, 152, ... out to 158, the 16th, then 141
   constexpr unsigned int wide = 20;
-  const ESI::Array<ESI::Index> wide_knn = scan_knn(p, wide);
+  ESI::Array<ESI::Index> wide_knn;
+  for (ESI::Index q = 0; q < ESI::Index(p.size()); ++q)
+  {
+    const ESI::Array<ESI::Index> row = scan_nearest(p, everyone, q, wide);
+    wide_knn.insert(wide_knn.end(), row.begin(), row.end());
+  }
   REQUIRE(wide_knn[150 * wide + 15] == 158);
   REQUIRE(wide_knn[150 * wide + 16] == 141);
   const ESI::Neighbor_offsets sixteen(wide_knn, wide);

@@ -21,9 +21,6 @@
 
 #include <CGAL/assertions.h>
 
-#include <boost/iterator/counting_iterator.hpp>
-#include <boost/iterator/filter_iterator.hpp>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -189,7 +186,13 @@ public:
     const bool relocates_levels = std::exchange(m_relocates_levels, false);
     Array<Index> given_nearest = std::move(m_given_nearest);
     if (m_count <= target)
-      return true; // nothing to remove: the first neighbours stay for the next run to follow from its start
+    {
+      // nothing to remove: no relocation follows to take the offsets, which
+      // a ranking's run through the kept points would hold at its peak;
+      // the columns stay for that run to follow from its start
+      m_first_neighbors.offsets = Neighbor_offsets();
+      return true;
+    }
     if (relocates_levels && few_present() && !given_nearest.empty())
       take_nearest<ConcurrencyTag>(std::move(given_nearest));
     else
@@ -199,9 +202,6 @@ public:
     }
     if (relocates_levels)
     {
-      // a ranking's run holds no offsets: they would count in its peak of
-      // memory, where its level cells come
-      m_first_neighbors.offsets = Neighbor_offsets();
       m_level_cells.emplace(indices_by_input_position(m_points), m_nearest);
       follow_representatives_when_few<ConcurrencyTag>();
     }
@@ -252,6 +252,7 @@ private:
     Array<double>().swap(m_spread);
     m_level_cells.reset();
     m_tree.reset();
+    Array<Index>().swap(m_listed);
     Array<double>().swap(m_weight);
     Array<Index>().swap(m_nearest);
     Array<Index>().swap(m_following);
@@ -267,18 +268,23 @@ private:
     const std::size_t n = m_points.size();
     prepare_to_follow<ConcurrencyTag>();
     m_nearest.assign(n, none_index);
-    m_following.assign(n * following, none_index);
-    if (m_count == n && m_first_neighbors.count == following)
+    Array<Index> first_neighbors = std::move(m_first_neighbors.columns);
+    if (m_count == n && first_neighbors.size() == n * following)
+    {
       // each point is its own nearest, and its first neighbours follow it,
       // as the search would find them
+      m_following = std::move(first_neighbors);
       for_each_follower<ConcurrencyTag>([&](Index i) {
         m_nearest[i] = i;
-        m_first_neighbors.first_of(i, following_of(i));
         m_cost[i].fetch_add(share(i), std::memory_order_relaxed);
       });
+    }
     else
+    {
+      Array<Index>().swap(first_neighbors);
+      m_following.assign(n * following, none_index);
       for_each_follower<ConcurrencyTag>([&](Index i) { follow_anew(i); });
-    m_first_neighbors.release_columns();
+    }
   }
 
   // Each point's `nearest` present point, given to set_present(), the
@@ -293,7 +299,7 @@ private:
     m_following.assign(m_points.size() * following, none_index);
   }
 
-  // The weights, the costs at 0, and the tree of the present points.
+  // The weights, the costs at 0, the present points listed and their tree.
   template <typename ConcurrencyTag>
   void prepare_to_follow()
   {
@@ -303,6 +309,7 @@ private:
     m_unit = share_unit(m_field, n);
     m_largest_share = largest_share(n);
     Array<std::atomic<std::int64_t> >(n).swap(m_cost);
+    list_present();
     build_tree<ConcurrencyTag>();
   }
 
@@ -385,10 +392,10 @@ private:
         m_spread[m_nearest[i]] +=
           m_weight[i] * std::sqrt(squared_distance(m_points.points[i], m_points.points[m_nearest[i]]));
     }
-    m_followers = present_points();
-    for (Index r : m_followers)
+    for (Index r : m_listed)
       m_spread[r] /= weight[r];
     m_weight.swap(weight);
+    m_followers = m_listed;
     m_largest_share = largest_share(m_followers.size());
     for (Index i = 0; i < Index(m_points.size()); ++i)
       m_cost[i].store(0, std::memory_order_relaxed);
@@ -403,6 +410,7 @@ private:
   template <typename ConcurrencyTag>
   void follow_relocated(const Array<Index>& arrived)
   {
+    list_present();
     build_tree<ConcurrencyTag>();
     const Point_tree arrivals(m_points, arrived.begin(), arrived.end());
     for_each_follower<ConcurrencyTag>([&](Index i) {
@@ -464,26 +472,19 @@ private:
     return count >= 2;
   }
 
-  // The present points, in index order.
-  Array<Index> present_points() const
+  void list_present()
   {
-    Array<Index> present;
-    present.reserve(m_count);
+    m_listed.clear();
     for (Index i = 0; i < Index(m_points.size()); ++i)
       if (is_present(i))
-        present.push_back(i);
-    return present;
+        m_listed.push_back(i);
   }
 
-  // The tree of the present points, built from their flags rather than from
-  // a list, which would take 4 bytes a point besides the tree's own.
   template <typename ConcurrencyTag>
   void build_tree()
   {
-    const auto present = [this](Index i) { return is_present(i); };
-    const boost::counting_iterator<Index> first(0), beyond(Index(m_points.size()));
-    m_tree.emplace(m_points, boost::make_filter_iterator(present, first, beyond),
-                   boost::make_filter_iterator(present, beyond, beyond), ConcurrencyTag());
+    m_tree.emplace(m_points, m_listed.begin(), m_listed.end(), ConcurrencyTag());
+    m_tree_size = m_listed.size();
   }
 
   // What `i` adds to the cost of its nearest present point: its share of
@@ -607,12 +608,12 @@ private:
     for (Index r : removals)
       m_level_cells->join(r, m_nearest[r]);
     follow_relocated<ConcurrencyTag>(
-      m_level_cells->move_to_medians<ConcurrencyTag>(m_points, present_points(), m_present, removals));
+      m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, removals));
     if (m_followers.empty())
     {
       m_level_cells->take_cells_of_nearest(m_nearest);
       follow_relocated<ConcurrencyTag>(
-        m_level_cells->move_to_medians<ConcurrencyTag>(m_points, present_points(), m_present, removals));
+        m_level_cells->move_to_medians<ConcurrencyTag>(m_points, m_listed, m_present, removals));
     }
     follow_representatives_when_few<ConcurrencyTag>();
     return removals;
@@ -623,23 +624,19 @@ private:
   // input point with, at most `removals`. Only the pairs with a point of
   // that tenth compare keys. The keys are computed where they are read
   // rather than held, which at the first round would take 16 bytes a point.
-  // The present points are those the tree holds, the removed ones coming
-  // after every present point.
   template <typename ConcurrencyTag>
   Array<Index> removable_in_round(std::size_t removals) const
   {
-    const Array<Index>& held = m_tree->indices();
-    const Key removed_key{ std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::uint32_t>::max() };
     const Key threshold = nth_smallest<ConcurrencyTag>(
-      held.size(), [&](std::size_t r) { return is_present(held[r]) ? key(held[r]) : removed_key; },
-      (std::max)(std::size_t(1), m_count / 10), std::less<Key>());
+      m_listed.size(), [&](std::size_t r) { return key(m_listed[r]); }, (std::max)(std::size_t(1), m_count / 10),
+      std::less<Key>());
     enum : char { beyond_threshold, removable, blocked };
     Array<std::atomic<char> > state(m_points.size()); // zero: beyond_threshold
     for_each_index<ConcurrencyTag>(
-      held.size(),
+      m_listed.size(),
       [&](std::size_t r) {
-        if (is_present(held[r]) && !(threshold < key(held[r])))
-          state[held[r]].store(removable, std::memory_order_relaxed);
+        if (!(threshold < key(m_listed[r])))
+          state[m_listed[r]].store(removable, std::memory_order_relaxed);
       },
       [](std::size_t) { return true; });
     for_each_follower<ConcurrencyTag>([&](Index i) {
@@ -652,9 +649,9 @@ private:
         state[later].store(blocked, std::memory_order_relaxed);
     });
     Growing_array<std::pair<Key, Index> > round;
-    for (Index i : held)
-      if (state[i].load(std::memory_order_relaxed) == removable)
-        round.emplace_back(key(i), i);
+    for (std::size_t r = 0; r < m_listed.size(); ++r)
+      if (state[m_listed[r]].load(std::memory_order_relaxed) == removable)
+        round.emplace_back(key(m_listed[r]), m_listed[r]);
     return first_by_key<ConcurrencyTag>(std::move(round), removals);
   }
 
@@ -687,8 +684,10 @@ private:
       m_tree->remove(p);
     }
     m_count -= round.size();
-    if (4 * m_count < 3 * m_tree->indices().size())
-      m_tree->drop_removed<ConcurrencyTag>();
+    m_listed.erase(std::remove_if(m_listed.begin(), m_listed.end(), [this](Index i) { return !is_present(i); }),
+                   m_listed.end());
+    if (4 * m_count < 3 * m_tree_size)
+      build_tree<ConcurrencyTag>();
     for_each_follower<ConcurrencyTag>([&](Index i) {
       const Index next = next_of(i);
       if (is_present(m_nearest[i]) && (next == none_index || is_present(next)))
@@ -698,17 +697,20 @@ private:
     });
   }
 
+  // the present points in index order
+  Array<Index> m_listed;
   // the points that follow the present points, when not all of them, and
   // the spread of each (see follow_representatives_when_few), when not 0
   Array<Index> m_followers;
   Array<double> m_spread;
-  // a tree of the present points, whose removed ones are only left out of
-  // its searches until they are a quarter of the points it holds, when it
-  // drops them (see Point_tree::drop_removed): its searches visit the
-  // leaves of the removed points, and when it dropped them at half, a
-  // direct call to 10% took 2.6 to 3.6% more processor time on the replicas
-  // and on 1,000,000 lion samples
+  // a tree of the present points, from which the removed ones are left out
+  // until a quarter of the points it holds are, when it is built again: its
+  // searches visit the leaves of the removed points, and rebuilt when half
+  // of them were, a direct call to 10% took 2.6 to 3.6% more processor time
+  // on the replicas and on 1,000,000 lion samples
   std::optional<Point_tree> m_tree;
+  // the points the tree was built with, removed ones included
+  std::size_t m_tree_size = 0;
   // whether a ranking's level boundaries are relocated, and their cells
   // while it runs
   bool m_relocates_levels = false;

@@ -80,9 +80,8 @@ protected:
   Array<char> m_present;
   std::size_t m_count;
   // the first neighbours of each point, which initialize() kept for an
-  // elimination that starts with every point present (see
-  // First_neighbors): the columns, freed once it started from them, and the
-  // offsets, which serve any present points
+  // elimination that starts with every point present: its columns, empty
+  // once it took them, and their offsets, which serve any present points
   const std::size_t m_first_neighbors_kept;
   First_neighbors m_first_neighbors;
   Array<Index> m_nearest_present; // see take_nearest_present

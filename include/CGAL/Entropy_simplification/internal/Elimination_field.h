@@ -12,8 +12,8 @@
 #include <CGAL/Entropy_simplification/internal/Array.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Feature_field.h>
-#include <CGAL/Entropy_simplification/internal/First_neighbors.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
+#include <CGAL/Entropy_simplification/internal/Neighbor_offsets.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -262,6 +262,31 @@ bool feature_strengths(const Indexed_points& points, unsigned int k, Normal_esti
     [&](std::size_t i) { strength[i] = (std::max)(feature_strength(entropy[i], floor), strength[i]); },
     [](std::size_t) { return true; });
   return true;
+}
+
+// What an elimination keeps of the k nearest neighbours of each point: the
+// first `count`, those of point i at columns[i * count], and the first
+// neighbours as offsets (see Neighbor_offsets); none when count is 0 or
+// above k.
+struct First_neighbors
+{
+  Array<Index> columns;
+  Neighbor_offsets offsets;
+};
+
+template <typename ConcurrencyTag>
+First_neighbors first_neighbors(const Array<Index>& knn, unsigned int k, std::size_t count)
+{
+  if (count == 0 || count > k)
+    return {};
+  First_neighbors first{ Array<Index>(knn.size() / k * count), Neighbor_offsets(knn, k, ConcurrencyTag()) };
+  for_each_index<ConcurrencyTag>(
+    knn.size() / k,
+    [&](std::size_t i) {
+      std::copy_n(knn.begin() + std::ptrdiff_t(i * k), count, first.columns.begin() + std::ptrdiff_t(i * count));
+    },
+    [](std::size_t) { return true; });
+  return first;
 }
 
 // The field from `knn`, the k nearest neighbours of each point nearest first

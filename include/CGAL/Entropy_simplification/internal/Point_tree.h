@@ -80,7 +80,11 @@ public:
   {
     if (!std::is_sorted(m_order.begin(), m_order.end()))
       std::sort(m_order.begin(), m_order.end());
-    build_nodes<ConcurrencyTag>();
+    // laid out first, the nodes are then filled independently of each other
+    m_nodes.reserve(2 * (m_order.size() / leaf_size + 1));
+    m_nodes.push_back(Node());
+    lay_out(0, 0, Index(m_order.size()), 0, points.size());
+    fill<ConcurrencyTag>(0);
   }
 
   // Writes to `best`, which has room for them, the first `count` points of
@@ -178,10 +182,6 @@ public:
     }
   }
 
-  // The indices the tree was built with, in index order, the removed ones
-  // included.
-  const Array<Index>& indices() const { return m_order; }
-
   // Leaves `p` out of later searches; the boxes stay as they were.
   void remove(Index p)
   {
@@ -193,32 +193,7 @@ public:
   // Brings a removed `p` back into later searches.
   void restore(Index p) { m_removed[p] = 0; }
 
-  // Builds the tree again without the removed points, which no longer come
-  // back, in the memory it holds: its searches then visit no leaf of
-  // theirs. The scales must be recorded again.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag>
-  void drop_removed()
-  {
-    if (m_removed.empty())
-      return;
-    m_order.erase(std::remove_if(m_order.begin(), m_order.end(), [this](Index i) { return m_removed[i] != 0; }),
-                  m_order.end());
-    build_nodes<ConcurrencyTag>();
-  }
-
 private:
-  // The nodes over m_order, laid out first, then filled independently of
-  // each other.
-  template <typename ConcurrencyTag>
-  void build_nodes()
-  {
-    m_nodes.clear();
-    m_nodes.reserve(2 * (m_order.size() / leaf_size + 1));
-    m_nodes.push_back(Node());
-    lay_out(0, 0, Index(m_order.size()), 0, m_points.size());
-    fill<ConcurrencyTag>(0);
-  }
-
   // Node `node` holds m_order[first, beyond), the tree's indices in
   // [low, high), which splits where the kd order splits it, in halves; when
   // all of them fall in one half, that half is split in turn.
