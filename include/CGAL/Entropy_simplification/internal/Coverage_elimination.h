@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Cell_medians.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_engine.h>
 #include <CGAL/Entropy_simplification/internal/Default_mode_terms.h>
 #include <CGAL/Entropy_simplification/internal/Elimination_field.h>
@@ -385,21 +386,36 @@ private:
     CGAL_precondition(m_level_cells.has_value()); // a ranking's, whose cells list the input order
     Array<double> weight(m_points.size(), 0.);
     m_spread.assign(m_points.size(), 0.);
-    for (Index i : m_level_cells->by_input())
-    {
-      weight[m_nearest[i]] += m_weight[i];
-      if (m_nearest[i] != i)
-        m_spread[m_nearest[i]] +=
-          m_weight[i] * std::sqrt(squared_distance(m_points.points[i], m_points.points[m_nearest[i]]));
-    }
-    for (Index r : m_listed)
-      m_spread[r] /= weight[r];
+    const Cell_members represented = represented_in_input_order();
+    for_each_index<ConcurrencyTag>(
+      m_listed.size(),
+      [&](std::size_t r) {
+        const Index p = m_listed[r];
+        for (const Index* i = represented.begin(r); i != represented.end(r); ++i)
+        {
+          weight[p] += m_weight[*i];
+          if (*i != p)
+            m_spread[p] += m_weight[*i] * std::sqrt(squared_distance(m_points.points[*i], m_points.points[p]));
+        }
+        m_spread[p] /= weight[p];
+      },
+      [](std::size_t) { return true; });
     m_weight.swap(weight);
     m_followers = m_listed;
     m_largest_share = largest_share(m_followers.size());
     for (Index i = 0; i < Index(m_points.size()); ++i)
       m_cost[i].store(0, std::memory_order_relaxed);
     for_each_follower<ConcurrencyTag>([&](Index r) { follow_anew(r); });
+  }
+
+  // The input points each present point represents, that of rank r in
+  // m_listed as cell r, in input order.
+  Cell_members represented_in_input_order() const
+  {
+    Array<Index> rank(m_points.size());
+    for (std::size_t r = 0; r < m_listed.size(); ++r)
+      rank[m_listed[r]] = Index(r);
+    return group_by_cell(m_listed.size(), m_level_cells->by_input(), [&](Index i) { return rank[m_nearest[i]]; });
   }
 
   // Follows the present points after a relocation brought back the points

@@ -18,6 +18,7 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -136,9 +137,9 @@ private:
   // (ties by input position), the first candidate, the site, being one. The
   // cells run in parallel, and when they are few, as at the coarsest
   // levels where a few cells hold every point, so do their candidates.
-  // Nothing is stored for each candidate otherwise (each cell's members are
-  // copied, see median_of_cell): at the 50% boundary of 1,000,000 points, an
-  // array of their merits took longer to allocate (110 ms, page faults)
+  // Each cell keeps its candidates' merits where it runs (see
+  // median_of_cell): at the 50% boundary of 1,000,000 points, an array of
+  // every candidate's merits took longer to allocate (110 ms, page faults)
   // than their sums.
   template <typename ConcurrencyTag>
   static Array<Index> medians(const Indexed_points& points, const Cell_members& candidates,
@@ -160,7 +161,7 @@ private:
   }
 
   // The median of cell `c` (see medians), its candidates' sums computed in
-  // parallel when `in_parallel`.
+  // parallel when `in_parallel`, a candidate each.
   template <typename ConcurrencyTag>
   static Index median_of_cell(const Indexed_points& points, const Cell_members& candidates,
                               const Cell_members& members, std::size_t c, bool in_parallel)
@@ -169,34 +170,53 @@ private:
     const std::size_t count = std::size_t(candidates.end(c) - candidate);
     if (count == 1) // the site alone: no point that the stage removed joined its cell
       return candidate[0];
-    // The members, scattered in memory, are read once, and each candidate
-    // sums over their copies: at the coarsest levels of a ranking, where a
-    // few cells hold every point, this took the medians of a ranking of
-    // 300,000 points from 0.36 s to 0.07 s (with a level at 1%). A small
-    // cell run on its own thread reuses that thread's copy, which thus stays
-    // small after the run. A large cell has its own, freed on return, and so
-    // has one whose candidates run in parallel, as its thread may take on
-    // another cell while it waits for them.
-    constexpr std::size_t reused_copy = 4096;
-    const std::size_t member_count = std::size_t(members.end(c) - members.begin(c));
-    thread_local Array<Working_point> reused;
-    Array<Working_point> own;
-    Array<Working_point>& member_points = in_parallel || member_count > reused_copy ? own : reused;
-    member_points.clear();
-    member_points.reserve(member_count);
-    for (const Index* i = members.begin(c); i != members.end(c); ++i)
-      member_points.push_back(points.points[*i]);
-    const auto merits = [&](std::size_t k) {
-      return merits_of(
-        member_points.size(), [&](std::size_t j) -> const Working_point& { return member_points[j]; },
-        points.points[candidate[k]], Neighbor{ 0., points.input_position[candidate[k]], candidate[k] });
-    };
+    // a few candidates' merits on the stack: a ranking with no level has
+    // about as many cells as points at its first boundaries
+    constexpr std::size_t on_stack = 8;
+    Merits merits_on_stack[on_stack];
+    Array<Merits> merits_on_heap(count > on_stack ? count : 0);
+    Merits* merits = count > on_stack ? merits_on_heap.data() : merits_on_stack;
+    for (std::size_t k = 0; k < count; ++k)
+      merits[k] = Merits{ Neighbor{ 0., points.input_position[candidate[k]], candidate[k] }, 0., 0. };
     if (!in_parallel)
-      return nearest_median(count, merits);
-    Array<Merits> computed(count);
-    for_each_index<ConcurrencyTag>(
-      count, [&](std::size_t k) { computed[k] = merits(k); }, [](std::size_t) { return true; });
-    return nearest_median(count, [&](std::size_t k) { return computed[k]; });
+      add_member_distances(points, members.begin(c), members.end(c), merits, count);
+    else
+      for_each_index<ConcurrencyTag>(
+        count, [&](std::size_t k) { add_member_distances(points, members.begin(c), members.end(c), merits + k, 1); },
+        [](std::size_t) { return true; });
+    return nearest_median(count, [&](std::size_t k) { return merits[k]; });
+  }
+
+  // Adds to the merits of each of the `count` candidates `merits[k]` the
+  // members' distances, summed in the members' order as merits_of() sums
+  // them. The members, scattered in memory, are read a block at a time into
+  // a small copy over which each candidate sums in turn. At the coarsest
+  // levels of a ranking, where a few cells hold every point, reading them
+  // from the points for each candidate took the medians of a ranking of
+  // 300,000 points from 0.07 s to 0.36 s (with a level at 1%); a copy of
+  // each cell whole, new memory, took 26 ms at each of the last two
+  // boundaries of 1,000,000 points, mostly in page faults, and blocks 9 ms.
+  static void add_member_distances(const Indexed_points& points, const Index* first, const Index* beyond,
+                                   Merits* merits, std::size_t count)
+  {
+    constexpr std::size_t block = 256;
+    Working_point copy[block];
+    for (; first < beyond; first += (std::min)(block, std::size_t(beyond - first)))
+    {
+      const std::size_t size = (std::min)(block, std::size_t(beyond - first));
+      for (std::size_t j = 0; j < size; ++j)
+        copy[j] = points.points[first[j]];
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        const Working_point& at = points.points[merits[k].member.id];
+        for (std::size_t j = 0; j < size; ++j)
+        {
+          const double d2 = squared_distance(copy[j], at);
+          merits[k].distance_sum += std::sqrt(d2);
+          merits[k].squared_radius = (std::max)(merits[k].squared_radius, d2);
+        }
+      }
+    }
   }
 
   // The median among `count` candidates, `merits(k)` giving the k-th's
