@@ -66,18 +66,26 @@ struct Merits
   double squared_radius;
 };
 
+// Adds to `merits` the distances from `at` to the `count` members whose
+// j-th is at `member_point(j)`, in that order.
+template <typename MemberPoint>
+void add_distances(Merits& merits, std::size_t count, const MemberPoint& member_point, const Working_point& at)
+{
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const double d2 = squared_distance(member_point(j), at);
+    merits.distance_sum += std::sqrt(d2);
+    merits.squared_radius = (std::max)(merits.squared_radius, d2);
+  }
+}
+
 // The merits of `member`, at `at`, among the `count` members whose j-th is
 // at `member_point(j)`.
 template <typename MemberPoint>
 Merits merits_of(std::size_t count, const MemberPoint& member_point, const Working_point& at, Neighbor member)
 {
   Merits r{ member, 0., 0. };
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double d2 = squared_distance(member_point(j), at);
-    r.distance_sum += std::sqrt(d2);
-    r.squared_radius = (std::max)(r.squared_radius, d2);
-  }
+  add_distances(r, count, member_point, at);
   return r;
 }
 

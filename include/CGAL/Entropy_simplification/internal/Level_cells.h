@@ -18,7 +18,6 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -171,7 +170,7 @@ private:
     if (count == 1) // the site alone: no point that the stage removed joined its cell
       return candidate[0];
     // a few candidates' merits on the stack: a ranking with no level has
-    // about as many cells as points at its first boundaries
+    // half as many cells as points at its first boundary
     constexpr std::size_t on_stack = 8;
     Merits merits_on_stack[on_stack];
     Array<Merits> merits_on_heap(count > on_stack ? count : 0);
@@ -188,8 +187,7 @@ private:
   }
 
   // Adds to the merits of each of the `count` candidates `merits[k]` the
-  // members' distances, summed in the members' order as merits_of() sums
-  // them. The members, scattered in memory, are read a block at a time into
+  // members' distances, in the members' order (see add_distances). The members, scattered in memory, are read a block at a time into
   // a small copy over which each candidate sums in turn. At the coarsest
   // levels of a ranking, where a few cells hold every point, reading them
   // from the points for each candidate took the medians of a ranking of
@@ -201,21 +199,16 @@ private:
   {
     constexpr std::size_t block = 256;
     Working_point copy[block];
-    for (; first < beyond; first += (std::min)(block, std::size_t(beyond - first)))
+    while (first < beyond)
     {
       const std::size_t size = (std::min)(block, std::size_t(beyond - first));
       for (std::size_t j = 0; j < size; ++j)
         copy[j] = points.points[first[j]];
       for (std::size_t k = 0; k < count; ++k)
-      {
-        const Working_point& at = points.points[merits[k].member.id];
-        for (std::size_t j = 0; j < size; ++j)
-        {
-          const double d2 = squared_distance(copy[j], at);
-          merits[k].distance_sum += std::sqrt(d2);
-          merits[k].squared_radius = (std::max)(merits[k].squared_radius, d2);
-        }
-      }
+        add_distances(
+          merits[k], size, [&](std::size_t j) -> const Working_point& { return copy[j]; },
+          points.points[merits[k].member.id]);
+      first += size;
     }
   }
 
