@@ -79,21 +79,14 @@ void add_distances(Merits& merits, std::size_t count, const MemberPoint& member_
   }
 }
 
-// The merits of `member`, at `at`, among the `count` members whose j-th is
-// at `member_point(j)`.
-template <typename MemberPoint>
-Merits merits_of(std::size_t count, const MemberPoint& member_point, const Working_point& at, Neighbor member)
-{
-  Merits r{ member, 0., 0. };
-  add_distances(r, count, member_point, at);
-  return r;
-}
-
+// The merits of `member` among the members [first, beyond).
 inline Merits merits_of(const Indexed_points& points, const Index* first, const Index* beyond, Neighbor member)
 {
-  return merits_of(
-    std::size_t(beyond - first), [&](std::size_t j) -> const Working_point& { return points.points[first[j]]; },
-    points.points[member.id], member);
+  Merits r{ member, 0., 0. };
+  add_distances(
+    r, std::size_t(beyond - first), [&](std::size_t j) -> const Working_point& { return points.points[first[j]]; },
+    points.points[member.id]);
+  return r;
 }
 
 // Whether `a` is nearer than `b` to being the cell's median: a lesser
