@@ -853,10 +853,12 @@ TEST_CASE("Default mode: bad input gets a documented behaviour", "[default][bad 
   SECTION("jet normals on a cluster narrower than 1e-150 in a wider cloud: null normals there, no crash")
   {
     // the fit's scaling underflowed on such a cluster, and its SVD read out
-    // of bounds: a crash with the cluster's spacing below about 1e-162
+    // of bounds: a crash with the cluster's spacing below about 1e-162, which
+    // is now rejected (points too near to be told apart); at 1e-153 the
+    // points are told apart, and the cluster is still narrower than 1e-150
     std::vector<Point> clustered;
     for (int i = 0; i < 11; ++i)
-      clustered.emplace_back(0.25, double(i) * 1e-200, double(i % 7) * 1e-200);
+      clustered.emplace_back(0.25, double(i) * 1e-153, double(i % 7) * 1e-153);
     clustered.emplace_back(1., 1., 1.);
     ES::Options jet;
     jet.normal_estimation = ES::Normal_estimation::jet;

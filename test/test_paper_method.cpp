@@ -11,18 +11,23 @@
 #include "simplification_run.h"
 #include "test_clouds.h"
 
+#include <CGAL/Entropy_simplification/compute_entropy_importance.h>
 #include <CGAL/Entropy_simplification/compute_mean_normal_angle_entropy.h>
+#include <CGAL/Entropy_simplification/entropy_simplification_ranks.h>
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
 
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
 #include <CGAL/jet_estimate_normals.h>
 #include <CGAL/pca_estimate_normals.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <set>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -411,6 +416,62 @@ TEST_CASE("Bad input gets a documented behaviour", "[bad input]")
         }
       }
     }
+  }
+  SECTION("distinct points too near to be told apart, in a cloud of ordinary extent, are rejected before anything "
+          "moves, by every function that orders neighbours, in both modes; coincident copies are not")
+  {
+    // a cluster of 3,000 points 1e-200 wide: their squared distances
+    // underflow to 0, and a search among them used to visit them all, a
+    // run taking minutes
+    std::vector<Point> cluster = points;
+    for (int i = 0; i < 3000; ++i)
+      cluster.push_back(Point(1e-200 * (i % 17), 1e-200 * (i / 17), 1e-200 * (i % 5)));
+    // one pair 1e-160 apart: its squared distance is subnormal
+    std::vector<Point> pair = points;
+    pair.push_back(Point(1e-160, 0., 0.));
+    pair.push_back(Point(2e-160, 0., 0.));
+    const std::string message = "closer than about 1.5e-154";
+    for (const std::vector<Point>& input : { cluster, pair })
+    {
+      for (const ES::Options& options : { ES::Options(), paper_mode() })
+      {
+        std::vector<Point> copy = input;
+        CHECK_THROWS_WITH(CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options),
+                          Catch::Contains(message));
+        CHECK(copy == input);
+        std::vector<std::size_t> ranks;
+        CHECK_THROWS_WITH(CGAL::entropy_simplification_ranks<CGAL::Sequential_tag>(
+                            copy, 10, std::back_inserter(ranks), CGAL::parameters::default_values(), options),
+                          Catch::Contains(message));
+        CHECK(ranks.empty());
+      }
+      std::vector<std::pair<Point, double> > with_importance;
+      for (const Point& p : input)
+        with_importance.emplace_back(p, 0.);
+      CHECK_THROWS_WITH(CGAL::compute_entropy_importance<CGAL::Sequential_tag>(
+                          with_importance, 10, CGAL::Second_of_pair_property_map<std::pair<Point, double> >(),
+                          CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, double> >())),
+                        Catch::Contains(message));
+      CHECK_THROWS_WITH(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(input, 10),
+                        Catch::Contains(message));
+    }
+    // 1e-150 apart, the squared distance is a normal double: told apart
+    std::vector<Point> apart = points;
+    apart.push_back(Point(1e-150, 0., 0.));
+    apart.push_back(Point(2e-150, 0., 0.));
+    for (const ES::Options& options : { ES::Options(), paper_mode() })
+    {
+      std::vector<Point> copy = apart;
+      CHECK(std::distance(copy.begin(),
+                          CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(copy, 10, count(50), options)) == 50);
+    }
+    // copies of a point coincide: they are no such pair, in either function
+    // that takes them (collapsed by the simplification, kept by the entropy)
+    std::vector<Point> copies = points;
+    copies.insert(copies.end(), 30, points[7]);
+    CHECK(std::isfinite(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(copies, 10)));
+    CHECK(std::distance(copies.begin(), CGAL::entropy_simplify_point_set<CGAL::Sequential_tag>(
+                                          copies, 10, count(50), paper_mode())) == 50);
   }
   SECTION("a null reference normal is an error")
   {

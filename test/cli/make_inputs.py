@@ -173,6 +173,7 @@ def main():
           "".join("%r %r %r\n" % p for p in points[:-1]) + "inf 0 0\n")
     write("huge_coordinate.xyz", xyz_text(points) + "1e155 0 0\n")
     write("tiny_extent.xyz", xyz_text([(x * 1e-200, y * 1e-200, z * 1e-200) for x, y, z in points]))
+    write("too_near.xyz", xyz_text(points + [(x * 1e-200, y * 1e-200, z * 1e-200) for x, y, z in points]))
     write("words.xyz", "hello world and more\n")
     write("mixed_widths.xyz", xyz_text(points[:10]) + "0 0 0 0 0 1\n")
     write("triangle_soup.xyz", "0 0 0 1 0 0 0 1 0\n" * 20)

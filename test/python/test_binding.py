@@ -156,6 +156,7 @@ def test_empty_input():
     (lambda p: es.simplify(np.where(np.arange(len(p))[:, None] == 7, np.nan, p), count=10),
      "point #7 has a coordinate that is not finite"),
     (lambda p: es.simplify(p * 1e-200, count=10), "which is not 0 but below 1e-150"),
+    (lambda p: es.simplify(np.vstack([p, p * 1e-200]), count=10), "closer than about 1.5e-154"),
     (lambda p: es.simplify(p, ratio="a tenth"), "ratio must be a number, got 'a tenth'"),
     (lambda p: es.simplify(p, count=2.5), "count must be a whole number, got 2.5"),
     (lambda p: es.simplify(p, count=2 ** 70), "count is out of range"),

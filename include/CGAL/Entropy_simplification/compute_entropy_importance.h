@@ -147,7 +147,8 @@ Array<double> importance_of_distinct_points(Array<Working_point>&& points, unsig
    for `CGAL::pca_estimate_normals()`.
 
    \throw std::invalid_argument when a coordinate is not finite or exceeds
-   1e150 in magnitude, or the points span less than 1e-150 but more than 0;
+   1e150 in magnitude, the points span less than 1e-150 but more than 0, or
+   two distinct points lie closer than about 1.5e-154 to each other;
    when `k` is out of range or the range has fewer than
    `k + 1` distinct points (as for `CGAL::entropy_simplify_point_set()`); in
    `Mode::paper`, when `Options::reference_normal` is null or not finite.

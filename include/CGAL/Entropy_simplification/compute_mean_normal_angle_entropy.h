@@ -81,7 +81,9 @@ namespace CGAL {
    \return the mean entropy in bits, in `[0, log2(k + 1)]` up to rounding
 
    \throw std::invalid_argument when a coordinate is not finite or exceeds 1e150
-   in magnitude, when the points span less than 1e-150 but more than 0, when `k` is out of range (as for
+   in magnitude, when the points span less than 1e-150 but more than 0, when
+   two distinct points lie closer than about 1.5e-154 to each other (coincident
+   points are accepted), when `k` is out of range (as for
    `CGAL::entropy_simplify_point_set()`), when the range
    has fewer than `k + 1` points, or when `Options::reference_normal` is null
    or not finite.

@@ -235,7 +235,9 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    \throw std::invalid_argument (in every build type, before any point is
    moved) when a coordinate is not finite or exceeds 1e150 in magnitude (squared
    distances would overflow); when the points span less than 1e-150 along
-   every axis but do not all coincide (squared distances would underflow); when `k` is below 2 (below 5 with
+   every axis but do not all coincide, or when two distinct points lie
+   closer than about 1.5e-154 to each other, whatever the extent of the
+   cloud (squared distances would underflow); when `k` is below 2 (below 5 with
    jet fitting) or above 1000; when the range has fewer than `k + 1` distinct
    points;
    when `select_percentage` is outside `(0, 100]` or `number_of_output_points`

@@ -15,8 +15,10 @@
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/use.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -69,9 +71,11 @@ public:
 
   // Fills every candidate list, then the reverse lists, which count for 80%
   // and 20% of the fraction done that `progress` receives between blocks of
-  // points, on the calling thread; returns false when it asked to stop. The
-  // lists' arrays, large with a large k (1.3 GB at 300,000 points and
-  // k = 300), grow 4M entries at a time, so that a stop is seen meanwhile.
+  // points, on the calling thread; returns false when it asked to stop, and
+  // throws std::invalid_argument when two points are too near to be told
+  // apart (see too_near_to_tell_apart). The lists' arrays, large with a
+  // large k (1.3 GB at 300,000 points and k = 300), grow 4M entries at a
+  // time, so that a stop is seen meanwhile.
   template <typename ConcurrencyTag, typename Progress>
   bool initialize(const Progress& progress)
   {
@@ -79,9 +83,18 @@ public:
     const std::size_t part = (std::size_t(1) << 22) / m_capacity + 1;
     reserve_untouched(m_candidates, n * m_capacity);
     reserve_untouched(m_reverse, n * m_block);
-    return for_each_index_growing<ConcurrencyTag>(
-             n, part, [&](std::size_t points) { grow_touched(m_candidates, points * m_capacity); },
-             [&](std::size_t i) { fill_candidates(Index(i)); }, share_of_progress(n, 0., 0.8, progress)) &&
+    std::atomic<bool> too_near(false);
+    const auto fill_progress = share_of_progress(n, 0., 0.8, progress);
+    const bool filled = for_each_index_growing<ConcurrencyTag>(
+      n, part, [&](std::size_t points) { grow_touched(m_candidates, points * m_capacity); },
+      [&](std::size_t i) {
+        if (!fill_candidates(Index(i)))
+          too_near.store(true, std::memory_order_relaxed);
+      },
+      [&](std::size_t done) { return !too_near.load(std::memory_order_relaxed) && fill_progress(done); });
+    if (too_near)
+      throw points_too_near_to_tell_apart();
+    return filled &&
            for_each_index_growing<CGAL::Sequential_tag>(
              n, part, [&](std::size_t points) { grow_touched(m_reverse, points * m_block); }, [](std::size_t) {},
              share_of_progress(n, 0.8, 0.1, progress)) &&
@@ -118,7 +131,12 @@ public:
     {
       erase_candidate(q, p);
       if (m_count[q] < m_k)
-        fill_candidates(q);
+      {
+        // the points were told apart when the lists were first filled
+        const bool apart = fill_candidates(q);
+        CGAL_assertion(apart);
+        CGAL_USE(apart);
+      }
       add_reverse(neighbors(q)[m_k - 1], q);
     }
   }
@@ -167,15 +185,19 @@ private:
   }
 
   // Sets the candidate list of `q` to the first `capacity` entries of its
-  // neighbour order (or all of them when fewer points are present).
-  void fill_candidates(Index q)
+  // neighbour order (or all of them when fewer points are present); returns
+  // false, the list unset, when a point is too near `q` to be told apart
+  // from it (see too_near_to_tell_apart).
+  bool fill_candidates(Index q)
   {
     thread_local Array<Neighbor> best;
-    m_tree->nearest(q, m_capacity, best);
+    if (!m_tree->nearest_apart(q, m_capacity, best))
+      return false;
     Index* list = &m_candidates[std::size_t(q) * m_capacity];
     for (std::size_t j = 0; j < best.size(); ++j)
       list[j] = best[j].id;
     m_count[q] = Count(best.size());
+    return true;
   }
 
   // Erases `p`, one of the k nearest neighbours of `q`, from the candidates of

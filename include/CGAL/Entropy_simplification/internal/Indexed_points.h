@@ -77,6 +77,24 @@ constexpr double largest_coordinate = 1e150;
 // then to 0, and every order the package defines would be meaningless.
 constexpr double smallest_extent = 1e-150;
 
+// Whether the points `a` and `b`, at the squared distance `squared_distance`,
+// are distinct but too near to be told apart: closer than about 1.5e-154,
+// their squared distance underflows to a subnormal number or to 0, and every
+// order the package defines would be meaningless among them. The extent of
+// a cloud (smallest_extent) cannot rule this out where a cloud of normal
+// extent holds such a cluster.
+inline bool too_near_to_tell_apart(const Working_point& a, const Working_point& b, double squared_distance)
+{
+  return squared_distance < (std::numeric_limits<double>::min)() && a != b;
+}
+
+// What a function that found such points throws.
+inline std::invalid_argument points_too_near_to_tell_apart()
+{
+  return std::invalid_argument("two distinct points lie closer than about 1.5e-154 to each other: their squared "
+                               "distance underflows, and no neighbour order can tell them apart");
+}
+
 // The points of a range in input order, in double precision. Throws
 // std::invalid_argument on a coordinate that is not finite or exceeds
 // largest_coordinate, or on a nonzero extent below smallest_extent: the Kd

@@ -18,6 +18,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -106,6 +107,20 @@ public:
   {
     best.resize(count);
     best.resize(nearest(q, count, best.data()));
+  }
+
+  // The same, or false, with `best` in no particular state, when a point of
+  // the tree that does not coincide with `q` lies too near it to be told
+  // apart (see too_near_to_tell_apart): the search then stops there, where
+  // a search among many such points would visit every one of them.
+  bool nearest_apart(Index q, std::size_t count, Array<Neighbor>& best) const
+  {
+    best.resize(count);
+    Best_list_apart list{ { count, best.data() }, m_points.points[q], m_points.points };
+    if (!m_order.empty() && count > 0)
+      search_nearest(q, list);
+    best.resize(list.size);
+    return !list.too_near;
   }
 
   // The same, among the points that come before the point `than` only. The
@@ -340,6 +355,22 @@ public:
     }
   };
 
+  // A Best_list that stops, bounded below every distance, at the first
+  // point too near the point `q` to be told apart from it.
+  struct Best_list_apart : Best_list
+  {
+    const Working_point& q;
+    const Array<Working_point>& points;
+    bool too_near = false;
+    double bound() const { return too_near ? -1. : Best_list::bound(); }
+    void offer(const Neighbor& candidate)
+    {
+      too_near = too_near || too_near_to_tell_apart(q, points[candidate.id], candidate.squared_distance);
+      if (!too_near)
+        Best_list::offer(candidate);
+    }
+  };
+
 private:
   struct Best_one
   {
@@ -530,24 +561,34 @@ private:
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest
 // first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
-// k points besides each query. Returns false when `progress` asked to stop.
-// The table, large with a large k, grows 4M entries at a time.
+// k points besides each query, none of them coinciding. Returns false when
+// `progress` asked to stop; throws std::invalid_argument when two of the
+// points are too near to be told apart (see too_near_to_tell_apart). The
+// table, large with a large k, grows 4M entries at a time.
 template <typename ConcurrencyTag, typename Progress>
 bool nearest_neighbor_table(const Point_tree& tree, const Array<Index>& queries, unsigned int k,
                             Array<Index>& table, const Progress& progress)
 {
   table.clear();
   reserve_untouched(table, queries.size() * std::size_t(k));
-  return for_each_index_growing<ConcurrencyTag>(
+  std::atomic<bool> too_near(false);
+  const bool completed = for_each_index_growing<ConcurrencyTag>(
     queries.size(), (std::max)(std::size_t(1), (std::size_t(1) << 22) / k),
     [&](std::size_t rows) { grow_touched(table, rows * k); },
     [&](std::size_t r) {
       thread_local Array<Neighbor> best;
-      tree.nearest(queries[r], k, best);
+      if (!tree.nearest_apart(queries[r], k, best))
+      {
+        too_near.store(true, std::memory_order_relaxed);
+        return;
+      }
       for (unsigned int j = 0; j < k; ++j)
         table[r * k + j] = best[j].id;
     },
-    progress);
+    [&](std::size_t done) { return !too_near.load(std::memory_order_relaxed) && progress(done); });
+  if (too_near)
+    throw points_too_near_to_tell_apart();
+  return completed;
 }
 
 } // namespace internal
