@@ -367,6 +367,20 @@ TEST_CASE("The picture of --render: the input beside the result, by importance, 
   CHECK(painted(width / 2, width, yellow) > 0); // point 0 is kept
   const unsigned char* corner = rgb.get() + (std::size_t(height - 1) * width + width - 1) * 3;
   CHECK((corner[0] == 255 && corner[1] == 255 && corner[2] == 255));
+
+  // the same cloud scaled by powers of two, exactly: the same picture, where
+  // depths kept as floats in the cloud's units overflowed beyond 3.4e38 (half
+  // the points not drawn) and lost their order below about 1e-38
+  for (int exponent : { 140, -170 })
+  {
+    es::Cloud scaled = cloud;
+    for (es::Column& column : scaled.table.columns)
+      if (column.name == "x" || column.name == "y" || column.name == "z")
+        for (double& v : column.values)
+          v = std::ldexp(v, exponent);
+    const bool same = es::render_side_by_side(scaled, kept, importance).rgb == picture.rgb;
+    CHECK(same);
+  }
 }
 
 TEST_CASE("The thread limit of --threads holds while it lives, and the result does not change",

@@ -80,9 +80,16 @@ inline View view_of(const std::vector<Eigen::Vector3d>& points)
   for (const Eigen::Vector3d& p : points)
     view.centre += p;
   view.centre /= double(points.size());
+  // the offsets in units of the largest, so that their squares neither
+  // overflow nor underflow at any scale the package accepts (up to 1e150)
+  double unit = 0.;
+  for (const Eigen::Vector3d& p : points)
+    unit = (std::max)(unit, (p - view.centre).cwiseAbs().maxCoeff());
+  if (!(unit > 0.))
+    unit = 1.;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const Eigen::Vector3d& p : points)
-    covariance += (p - view.centre) * (p - view.centre).transpose();
+    covariance += ((p - view.centre) / unit) * ((p - view.centre) / unit).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance); // eigenvalues ascending
   view.axes << solver.eigenvectors().col(2), solver.eigenvectors().col(1), solver.eigenvectors().col(0);
   double extent = 0.;
@@ -96,13 +103,15 @@ inline View view_of(const std::vector<Eigen::Vector3d>& points)
 }
 
 // A disc of `radius` pixels at the point, in the panel whose left edge is
-// at `left`, where it is nearer than what is drawn there.
+// at `left`, where it is nearer than what is drawn there. Its depth is in
+// pixels, as its position: in the cloud's units, a float would overflow
+// beyond 3.4e38 and lose the order of depths near 1e-45.
 inline void splat(Picture& picture, const View& view, int left, const Eigen::Vector3d& p, double radius,
                   const std::array<std::uint8_t, 3>& colour)
 {
-  const Eigen::Vector3d q = view.axes.transpose() * (p - view.centre);
-  const double cx = left + margin + panel / 2. + q.x() * view.scale;
-  const double cy = title + margin + panel / 2. - q.y() * view.scale;
+  const Eigen::Vector3d q = view.axes.transpose() * (p - view.centre) * view.scale;
+  const double cx = left + margin + panel / 2. + q.x();
+  const double cy = title + margin + panel / 2. - q.y();
   const int reach = int(std::ceil(radius));
   for (int y = int(std::floor(cy)) - reach; y <= int(std::floor(cy)) + reach; ++y)
     for (int x = int(std::floor(cx)) - reach; x <= int(std::floor(cx)) + reach; ++x)
