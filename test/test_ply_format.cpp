@@ -290,7 +290,9 @@ TEST_CASE("Comments survive write_ply then read_ply", "[ply]")
   CHECK(write_then_read(table, false, { "two\nlines" }).comments == std::vector<std::string>{ "two lines" });
 }
 
-TEST_CASE("read_ply reads past the elements before the vertex element and not those after", "[ply]")
+TEST_CASE("read_ply reads past the elements before the vertex element, and those after it to note what does not "
+          "match the header",
+          "[ply]")
 {
   const std::string header = "element material 2\nproperty uchar r\nproperty list uchar int ids\n"
                              "element vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
@@ -300,28 +302,37 @@ TEST_CASE("read_ply reads past the elements before the vertex element and not th
                                 column("z", Scalar_type::float32, { 3., 6. }) } };
   const std::vector<std::string> notes = { "2 materials dropped: a simplified point set has only vertices",
                                            "3 faces dropped: a simplified point set has only vertices" };
+  const auto with_mismatch = [&](const std::string& reason) {
+    std::vector<std::string> all = notes;
+    all.push_back("the elements after the vertices do not match the header (" + reason +
+                  "): if the vertices are not what the header declares either, the file is not read right");
+    return all;
+  };
   SECTION("ASCII")
   {
     const Ply_cloud cloud = read_ply(ascii_ply(header, "1 3 0 1 2\n2 0\n1 2 3\n4 5 6\n3 0 1 2 0\nnot read\n"));
     CHECK(difference(cloud.table, expected) == "");
-    CHECK(cloud.notes == notes);
+    CHECK(cloud.notes == with_mismatch("the file is truncated: it ends after 2 of 3 records of element 'face'"));
+    CHECK(read_ply(ascii_ply(header, "1 3 0 1 2\n2 0\n1 2 3\n4 5 6\n3 0 1 2 0\n3 0 1 2 0\n3 0 1 2 0\n")).notes ==
+          notes);
   }
   SECTION("binary")
   {
     // material 1: r = 1, ids = { 7 }; material 2: r = 2, ids = {}; then the
-    // vertices, then a face cut short, which is not read
+    // vertices, then a face cut short, which is noted
     const std::string body = bytes({ 0x01, 0x01, 0x07, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x80, 0x3f, 0x00,
                                      0x00, 0x00, 0x40, 0x00, 0x00, 0x40, 0x40, 0x00, 0x00, 0x80, 0x40, 0x00, 0x00,
                                      0xa0, 0x40, 0x00, 0x00, 0xc0, 0x40, 0x03, 0x00 });
     const Ply_cloud cloud = read_ply(binary_ply(header, body));
     CHECK(difference(cloud.table, expected) == "");
-    CHECK(cloud.notes == notes);
+    CHECK(cloud.notes == with_mismatch("the PLY header claims 3 records of element 'face', more than the 2 bytes "
+                                       "left in the file can hold"));
   }
   SECTION("empty elements give no note")
   {
     const Ply_cloud cloud = read_ply(ascii_ply("element face 0\nproperty list uchar int vertex_indices\n" +
                                                  xyz_header + "element edge 1\nproperty int a\n",
-                                               "1 2 3\n"));
+                                               "1 2 3\n7\n"));
     CHECK(cloud.notes == std::vector<std::string>{ "1 edge dropped: a simplified point set has only vertices" });
   }
 }
@@ -373,6 +384,39 @@ TEST_CASE("read_ply notes data after the vertices when they are the last element
   // white space after ASCII vertices, and nothing after binary ones, is no news
   CHECK(read_ply(ascii_ply(header, "1 2 3\n4 5 6\n \t\r\n\n")).notes.empty());
   CHECK(read_ply(binary_ply(header, three + three)).notes.empty());
+}
+
+TEST_CASE("read_ply reads past the elements after the vertices and notes what follows them, or what does not "
+          "match the header there",
+          "[ply]")
+{
+  const std::string header = "element vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\n";
+  const std::string face_dropped = "1 face dropped: a simplified point set has only vertices";
+  // a face, then nothing: only the face is noted
+  CHECK(read_ply(ascii_ply(header, "1 2 3\n4 5 6\n3 0 1 1\n")).notes == std::vector<std::string>{ face_dropped });
+  // a face, then a line more: noted, whatever the order of the elements
+  const Ply_cloud more = read_ply(ascii_ply(header, "1 2 3\n4 5 6\n3 0 1 1\n7 8 9\n"));
+  CHECK(more.table.size() == 2);
+  CHECK(more.notes == std::vector<std::string>{ face_dropped, "6 bytes follow the elements that the header "
+                                                "declares, the 2 vertices and those after them, and were not read: "
+                                                "if more vertices are there, the header's counts are wrong" });
+  // the face missing: the elements after the vertices do not match
+  const Ply_cloud missing = read_ply(ascii_ply(header, "1 2 3\n4 5 6\n"));
+  REQUIRE(missing.notes.size() == 2);
+  CHECK_THAT(missing.notes[1], Catch::StartsWith("the elements after the vertices do not match the header ("));
+  // a binary header over a text body, the vertices not last (a hostile
+  // review's file, read silently before): the text left over is noted
+  const std::string no_faces = "element vertex 2\nproperty double x\nproperty double y\nproperty double z\n"
+                               "element face 0\nproperty list uchar int vertex_indices\n";
+  const Ply_cloud text_body = read_ply(binary_ply(no_faces, "1.5 2.5 3.5\n4.5 5.5 6.5\n7.5 8.5 9.5\n10 11 12\n"
+                                                            "13 14 15\n16 17 18\n"));
+  REQUIRE(text_body.notes.size() == 1);
+  CHECK_THAT(text_body.notes[0], Catch::Contains("bytes follow the elements that the header declares"));
+  // a binary face, then nothing: no note but the face's
+  const std::string vertices = bytes({ 0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x40, 0x40 });
+  const std::string face = bytes({ 0x03, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00 });
+  CHECK(read_ply(binary_ply(header, vertices + vertices + face)).notes == std::vector<std::string>{ face_dropped });
 }
 
 TEST_CASE("read_ply accepts \\r\\n line ends", "[ply]")

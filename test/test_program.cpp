@@ -126,6 +126,17 @@ TEST_CASE("OFF: OFF and NOFF vertices, faces dropped with a note, counts checked
   REQUIRE(off.notes.size() == 1);
   CHECK(off.notes[0] == "1 face dropped: a simplified point set has no faces");
 
+  // a header that counts fewer vertices than the file holds: noted, with
+  // no faces declared or where a face should follow
+  const std::string undercount = "line 5, after the 2 vertices that the header declares, is not ";
+  CHECK(es::read_off("OFF\n2 0 0\n0 0 0\n1 1 1\n0.5 0.5 0.5\n").notes ==
+        std::vector<std::string>{ undercount + "read, as the header declares no faces: if more vertices are there, "
+                                               "the header's count is wrong" });
+  CHECK(es::read_off("OFF\n2 1 0\n0 0 0\n1 1 1\n0.5 0.5 0.5\n3 0 1 2\n").notes ==
+        std::vector<std::string>{ "1 face dropped: a simplified point set has no faces",
+                                  undercount + "a face: if more vertices are there, the header's count is wrong" });
+  CHECK(es::read_off("OFF\n2 0 0\n0 0 0\n1 1 1\n# a comment, then blank lines\n\n \n").notes.empty());
+
   const es::Off_cloud noff = es::read_off("NOFF 2 0 0\n0 0 0 0 0 1\n1 1 1 0 1 0\n");
   CHECK(noff.table.find("ny")->values == std::vector<double>{ 0., 1. });
 

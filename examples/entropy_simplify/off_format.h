@@ -46,11 +46,38 @@ inline std::size_t parse_count(std::string_view token, const char* what)
   return count;
 }
 
+// Whether `tokens` may be a face: a vertex count, then at least that many
+// indices (and perhaps a colour).
+inline bool may_be_a_face(const std::vector<std::string_view>& tokens)
+{
+  std::size_t count = 0;
+  const auto [end, error] = std::from_chars(tokens[0].data(), tokens[0].data() + tokens[0].size(), count);
+  return error == std::errc() && end == tokens[0].data() + tokens[0].size() && count >= 1 &&
+         tokens.size() > count;
+}
+
+// The vertices a header declares are all that is read. Faces may follow
+// them, when the header declares some; anything else suggests that the
+// header counts the vertices wrong, and the user should hear of it, as of
+// a PLY file's bytes after its vertices.
+inline void note_lines_after_vertices(Text_reader& reader, std::size_t vertices, std::size_t faces,
+                                      std::vector<std::string>& notes)
+{
+  std::vector<std::string_view> tokens;
+  if (!next_content_line(reader, tokens) || (faces > 0 && may_be_a_face(tokens)))
+    return;
+  notes.push_back("line " + std::to_string(reader.line_number()) + ", after the " + std::to_string(vertices) +
+                  (vertices == 1 ? " vertex" : " vertices") + " that the header declares, is not " +
+                  (faces > 0 ? "a face" : "read, as the header declares no faces") +
+                  ": if more vertices are there, the header's count is wrong");
+}
+
 } // namespace off_detail
 
 // The header is `OFF` or `NOFF` (a normal after each vertex), then the
 // counts of vertices, faces and edges, on the same line or the next. Faces
-// are not read: a simplified point set has none.
+// are not read, a simplified point set having none; what follows the
+// vertices is noted when it cannot be a face.
 inline Off_cloud read_off(std::string_view bytes)
 {
   Text_reader reader(bytes);
@@ -98,6 +125,7 @@ inline Off_cloud read_off(std::string_view bytes)
   if (faces > 0)
     cloud.notes.push_back(std::to_string(faces) + (faces == 1 ? " face" : " faces") +
                           " dropped: a simplified point set has no faces");
+  off_detail::note_lines_after_vertices(reader, vertices, faces, cloud.notes);
   return cloud;
 }
 

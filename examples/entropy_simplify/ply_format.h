@@ -359,17 +359,55 @@ inline void read_ascii_vertices(Text_reader& reader, const Element& vertex, Poin
   }
 }
 
-// The vertices a header declares are all that is read: a file holding more
-// data after them than its last element may count them wrong, and its user
-// should hear of it.
-inline void note_bytes_after_vertices(std::size_t bytes, const Element& vertex, std::vector<std::string>& notes)
+// The vertices a header declares are all that is kept: a file holding more
+// data after its last element may count them wrong, and its user should
+// hear of it. `last` is that element.
+inline void note_bytes_after_elements(std::size_t bytes, const Element& last, const Element& vertex,
+                                      std::vector<std::string>& notes)
 {
-  if (bytes > 0)
-    notes.push_back(std::to_string(bytes) + (bytes == 1 ? " byte follows" : " bytes follow") + " the " +
-                    std::to_string(vertex.count) + (vertex.count == 1 ? " vertex" : " vertices") +
-                    " that the header declares, and " +
-                    (bytes == 1 ? "was" : "were") + " not read: if more vertices are there, the header's count is "
-                    "wrong");
+  if (bytes == 0)
+    return;
+  const std::string follow = std::to_string(bytes) + (bytes == 1 ? " byte follows" : " bytes follow") + " the ";
+  const std::string not_read = std::string(bytes == 1 ? "was" : "were") + " not read: if more vertices are there, ";
+  if (&last == &vertex)
+    notes.push_back(follow + std::to_string(vertex.count) + (vertex.count == 1 ? " vertex" : " vertices") +
+                    " that the header declares, and " + not_read + "the header's count is wrong");
+  else
+    notes.push_back(follow + "elements that the header declares, the " + std::to_string(vertex.count) +
+                    (vertex.count == 1 ? " vertex" : " vertices") + " and those after them, and " + not_read +
+                    "the header's counts are wrong");
+}
+
+// Reads past the elements after the vertices, [first, beyond), and notes
+// the bytes after them, or what does not match the header there: a header
+// that counts the vertices wrong, or whose format is not the body's, shows
+// there as well when the vertices are not the last element.
+template <typename Iterator>
+inline void note_what_follows_vertices(Iterator first, Iterator beyond, const Element& vertex, bool ascii,
+                                       bool big_endian, std::string_view bytes, Text_reader& text,
+                                       Byte_reader& binary, std::vector<std::string>& notes)
+{
+  const Element* last = &vertex;
+  try
+  {
+    for (Iterator element = first; element != beyond; ++element)
+    {
+      check_count_fits(*element, ascii, ascii ? bytes.size() - text.position() : binary.remaining());
+      if (ascii)
+        skip_ascii_element(text, *element);
+      else
+        skip_binary_element(binary, *element, big_endian);
+      last = &*element;
+    }
+  }
+  catch (const Read_error& error)
+  {
+    notes.push_back(std::string("the elements after the vertices do not match the header (") + error.what() +
+                    "): if the vertices are not what the header declares either, the file is not read right");
+    return;
+  }
+  note_bytes_after_elements(ascii ? (text.rest_is_blank() ? 0 : bytes.size() - text.position()) : binary.remaining(),
+                            *last, vertex, notes);
 }
 
 // ---- What is kept ----
@@ -395,8 +433,8 @@ inline Point_table vertex_columns(const Header& header, const Element& vertex, s
 
 } // namespace ply_detail
 
-// Reads the vertex element; elements before it are read past, those after it
-// are not read at all.
+// Reads the vertex element; the other elements are read past, and what
+// follows the last is noted.
 inline Ply_cloud read_ply(std::string_view bytes)
 {
   using namespace ply_detail;
@@ -429,9 +467,8 @@ inline Ply_cloud read_ply(std::string_view bytes)
     read_ascii_vertices(text, *vertex, cloud.table);
   else
     read_binary_vertices(binary, *vertex, big_endian, cloud.table);
-  if (vertex + 1 == header.elements.end())
-    note_bytes_after_vertices(ascii ? (text.rest_is_blank() ? 0 : bytes.size() - text.position()) : binary.remaining(),
-                              *vertex, cloud.notes);
+  note_what_follows_vertices(vertex + 1, header.elements.end(), *vertex, ascii, big_endian, bytes, text, binary,
+                             cloud.notes);
   return cloud;
 }
 
