@@ -29,6 +29,7 @@
 #include <limits>
 #include <new>
 #include <optional>
+#include <system_error>
 #include <vector>
 
 namespace entropy_simplify {
@@ -48,8 +49,15 @@ void check_formats(const Settings& s, Format in, Format out)
   if (s.importance && (out == Format::xyz || out == Format::off))
     throw Usage_error("--importance needs an output that stores a scalar property (PLY or LAS); XYZ and OFF do not");
   namespace fs = std::filesystem;
-  const auto same_file = [](const std::string& a, const std::string& b) {
-    return !a.empty() && !b.empty() && fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
+  // a link to what is no path, as /dev/stdout to a pipe, is compared as named
+  // (writing there is refused later, with the reason)
+  const auto resolved = [](const std::string& name) {
+    std::error_code error;
+    const fs::path path = fs::weakly_canonical(fs::absolute(name), error);
+    return error ? fs::absolute(name).lexically_normal() : path;
+  };
+  const auto same_file = [&](const std::string& a, const std::string& b) {
+    return !a.empty() && !b.empty() && resolved(a) == resolved(b);
   };
   if (same_file(s.indices, s.output) || same_file(s.render, s.output) || same_file(s.render, s.indices))
     throw Usage_error("--indices, --render and OUTPUT must name different files");
