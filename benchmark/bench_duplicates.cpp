@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Coincident points: the time and peak memory of
-// CGAL::entropy_simplify_point_set, k = 10, Sequential_tag, in both modes, on
+// CGAL::entropy_simplify_point_set, k = 10, Sequential_tag, in both modes, and
+// of the two measures (CGAL::compute_mean_normal_angle_entropy, and
+// CGAL::measure_simplification_quality of a cloud against itself), on
 // a plane of 20,000 points plus 0, 2,000, 20,000 and 200,000 copies of one of
 // its points, against a plane of 220,000 points without copies; and on a
 // plane of 200,000 points plus 200,000 copies against one of 400,000 points.
@@ -28,18 +30,23 @@
 //   - the range is a permutation of the input, so that the kept points are a
 //     subset of it, unaltered;
 //   - no point is kept twice; in particular at most one copy of the
-//     duplicated point is kept.
+//     duplicated point is kept;
+//   - for the measures, a mean entropy in [0, log2(k + 1)] and a cloud at
+//     distance 0 from itself.
 
 #include "bench_common.h"
 #include "bench_machine.h"
 #include "bench_process.h"
 
+#include <CGAL/Entropy_simplification/compute_mean_normal_angle_entropy.h>
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
+#include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -124,6 +131,7 @@ struct Result
 {
   std::size_t distinct_input = 0, kept = 0, distinct_kept = 0, kept_copies = 0;
   double seconds = 0., cpu_seconds = 0.;
+  double entropy_seconds = 0., quality_seconds = 0.; // of the measures
   long peak_kib = 0;
   char failures[512] = ""; // empty when every invariant holds
 };
@@ -133,6 +141,7 @@ struct Case
   std::size_t group = 0, plane = 0, copies = 0;
   std::size_t target = 0; // 10% of the plane's points, which are its distinct points
   Mode mode = Mode::weighted_elimination;
+  bool measures = false; // the two measures rather than a simplification
   Result result;
   std::string verdict; // "ok", or what failed
   std::string name() const
@@ -192,10 +201,46 @@ Result measure(const Case& c, int runs)
   return r;
 }
 
-// Runs `measure` in a child process.
+// In the child: `runs` calls of each measure on the input, which is also the
+// simplification measured, copies included, then the peak memory, then the
+// invariants.
+Result measure_copies(const Case& c, int runs)
+{
+  Result r;
+  const std::vector<Point> points = make_input(c.plane, c.copies);
+  std::vector<double> entropy_seconds, quality_seconds;
+  double bits = 0.;
+  CGAL::Entropy_simplification::Quality_report report;
+  for (int i = 0; i < runs; ++i)
+  {
+    auto start = std::chrono::steady_clock::now();
+    bits = CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(points, k);
+    entropy_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    start = std::chrono::steady_clock::now();
+    report = CGAL::measure_simplification_quality<CGAL::Sequential_tag>(points, points);
+    quality_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  r.entropy_seconds = median(entropy_seconds);
+  r.quality_seconds = median(quality_seconds);
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  r.peak_kib = usage.ru_maxrss;
+  r.distinct_input = count_distinct(points);
+  r.kept = report.kept_size;
+  std::string failures;
+  if (!(bits >= 0. && bits <= std::log2(double(k + 1)) + 1e-12))
+    failures += "a mean entropy of " + std::to_string(bits) + " bits";
+  if (report.mean_distance != 0. || report.max_distance != 0. || report.kept_size != points.size())
+    failures += std::string(failures.empty() ? "" : "; ") + "the cloud is not at distance 0 from itself";
+  std::snprintf(r.failures, sizeof r.failures, "%s", failures.c_str());
+  return r;
+}
+
+// Runs `measure` or `measure_copies` in a child process.
 void run_case(Case& c, int runs)
 {
-  const bench::Child_outcome<Result> outcome = bench::run_in_child<Result>([&] { return measure(c, runs); });
+  const bench::Child_outcome<Result> outcome =
+    bench::run_in_child<Result>([&] { return c.measures ? measure_copies(c, runs) : measure(c, runs); });
   c.result = outcome.result;
   c.verdict = outcome.verdict;
 }
@@ -215,7 +260,8 @@ const Case* find_case(const std::vector<Case>& cases, std::size_t group, std::si
                       Mode mode)
 {
   for (const Case& c : cases)
-    if (c.group == group && c.plane == plane && c.copies == copies && c.mode == mode && c.verdict == "ok")
+    if (c.group == group && c.plane == plane && c.copies == copies && c.mode == mode && !c.measures &&
+        c.verdict == "ok")
       return &c;
   return nullptr;
 }
@@ -241,7 +287,7 @@ void write_group(std::ostream& s, const std::vector<Case>& cases, const Group& g
     << " | memory / " << per << " | copies kept | invariants |\n"
     << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const Case& c : cases)
-    if (c.group == group)
+    if (c.group == group && !c.measures)
     {
       const Case* r = g.reference ? find_case(cases, group, g.reference, 0, c.mode) : nullptr;
       const Result& m = c.result;
@@ -292,6 +338,45 @@ void write_group(std::ostream& s, const std::vector<Case>& cases, const Group& g
   s << "\n";
 }
 
+// The measures' table of a group, and its largest number of copies against
+// the reference.
+void write_measures(std::ostream& s, const std::vector<Case>& cases, const Group& g, std::size_t group)
+{
+  const Case* ref = nullptr;
+  const Case* big = nullptr;
+  const std::size_t most = g.copies.empty() ? 0 : *std::max_element(g.copies.begin(), g.copies.end());
+  for (const Case& c : cases)
+    if (c.group == group && c.measures && c.verdict == "ok")
+    {
+      if (c.plane == g.reference && c.copies == 0)
+        ref = &c;
+      if (c.plane == g.plane && c.copies == most)
+        big = &c;
+    }
+  const std::string per = g.reference ? short_count(g.reference) : std::string("reference");
+  s << "The measures, on the same clouds: `compute_mean_normal_angle_entropy` (k = " << k
+    << ") and `measure_simplification_quality` of the cloud against itself, copies included.\n\n"
+    << "| case | points | distinct | mean entropy (s) | time / " << per << " | quality (s) | time / " << per
+    << " | peak (MiB) | invariants |\n|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const Case& c : cases)
+    if (c.group == group && c.measures)
+    {
+      const Result& m = c.result;
+      s << "| " << c.name() << " | " << thousands(c.plane + c.copies) << " | " << thousands(m.distinct_input) << " | "
+        << fixed(m.entropy_seconds, 3) << " | "
+        << (ref ? fixed(m.entropy_seconds / ref->result.entropy_seconds, 2) : "-") << " | "
+        << fixed(m.quality_seconds, 3) << " | "
+        << (ref ? fixed(m.quality_seconds / ref->result.quality_seconds, 2) : "-") << " | "
+        << fixed(double(m.peak_kib) / 1024., 1) << " | " << c.verdict << " |\n";
+    }
+  if (ref && big && most > 0)
+    s << "\nWith " << thousands(most) << " copies of one point added to the " << thousands(g.plane)
+      << "-point plane, the mean entropy takes " << fixed(big->result.entropy_seconds / ref->result.entropy_seconds, 2)
+      << "x and the quality " << fixed(big->result.quality_seconds / ref->result.quality_seconds, 2) << "x the time of the "
+      << thousands(g.reference) << "-point plane without copies.\n";
+  s << "\n";
+}
+
 std::string markdown(const std::vector<Case>& cases, const std::vector<Group>& groups, int runs,
                      const std::string& command, double minutes, const std::string& load)
 {
@@ -319,7 +404,10 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Group>& g
        "twice; *copies kept* counts the duplicated point among the kept points, the original included (at most "
        "1).\n\n";
   for (std::size_t i = 0; i < groups.size(); ++i)
+  {
     write_group(s, cases, groups[i], i, groups.size() > 1);
+    write_measures(s, cases, groups[i], i);
+  }
   std::string text = s.str();
   text.pop_back(); // one newline at the end
   return text;
@@ -395,6 +483,13 @@ int main(int argc, char** argv)
         if (groups[i].reference)
           add(groups[i].reference, 0);
       }
+    // the measures, once per cloud, after the simplifications
+    for (std::size_t i = 0, simplifications = cases.size(); i < simplifications; ++i)
+      if (cases[i].mode == Mode::weighted_elimination)
+      {
+        cases.push_back(cases[i]);
+        cases.back().measures = true;
+      }
 
     const std::string load = bench::load_average();
     const auto start = std::chrono::steady_clock::now();
@@ -402,9 +497,15 @@ int main(int argc, char** argv)
     for (Case& c : cases)
     {
       run_case(c, runs);
-      std::cerr << "bench_duplicates: " << c.name() << ", " << mode_name(c.mode) << ": " << fixed(c.result.seconds, 3)
-                << " s, " << fixed(double(c.result.peak_kib) / 1024., 1) << " MiB, " << c.result.kept
-                << " kept, of which " << c.result.kept_copies << " the duplicated point: " << c.verdict << std::endl;
+      if (c.measures)
+        std::cerr << "bench_duplicates: " << c.name() << ", measures: " << fixed(c.result.entropy_seconds, 3)
+                  << " s and " << fixed(c.result.quality_seconds, 3) << " s, "
+                  << fixed(double(c.result.peak_kib) / 1024., 1) << " MiB: " << c.verdict << std::endl;
+      else
+        std::cerr << "bench_duplicates: " << c.name() << ", " << mode_name(c.mode) << ": "
+                  << fixed(c.result.seconds, 3) << " s, " << fixed(double(c.result.peak_kib) / 1024., 1) << " MiB, "
+                  << c.result.kept << " kept, of which " << c.result.kept_copies << " the duplicated point: "
+                  << c.verdict << std::endl;
       failed = failed || c.verdict != "ok";
     }
     const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.;

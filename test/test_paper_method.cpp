@@ -528,6 +528,43 @@ TEST_CASE("The accuracy indicator (Eq. 6-7)", "[indicator]")
     CHECK(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(points, k) ==
           Approx(sum / double(points.size()) / std::log(2.)).epsilon(1e-12));
   }
+  SECTION("copies count in the mean: the brute-force importances, and many copies repeat the first's")
+  {
+    // groups on either side of k + 1 copies, so that a point's neighbours
+    // are some, all or none of its copies
+    std::vector<Point> copies = points;
+    std::size_t group = 0;
+    for (std::size_t extra : { 1, 9, 10, 11, 12, 40, 600 })
+    {
+      copies.insert(copies.begin() + std::ptrdiff_t(50 * group), extra, points[90 * group + 3]);
+      ++group;
+    }
+    // given, as the plane fitted to the points depends on their copies
+    ES::Options options;
+    options.reference_normal = std::array<double, 3>{ 0.1, -0.2, 1. };
+    const auto mean_of = [&](const std::vector<Point>& cloud, std::size_t more_copies_of_last) {
+      const auto state = brute_force::compute_state(cloud, std::vector<bool>(cloud.size(), true), k, options,
+                                                    ES::internal::reference_normal(options, cloud));
+      double sum = 0.;
+      for (double h : state.importance)
+        sum += h;
+      sum += double(more_copies_of_last) * state.importance.back();
+      return sum / double(cloud.size() + more_copies_of_last) / std::log(2.);
+    };
+    CHECK(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(
+            copies, k, CGAL::parameters::default_values(), options) == Approx(mean_of(copies, 0)).epsilon(1e-12));
+
+    // 200,000 copies of a point (each visited the others in each search, for
+    // minutes): beyond the first k + 1, each has the importance of the
+    // others, as the brute force computes it on k + 2 of them
+    std::vector<Point> few_copies = points;
+    few_copies.insert(few_copies.end(), k + 1, points[3]);
+    std::vector<Point> many_copies = points;
+    many_copies.insert(many_copies.end(), 200000, points[3]);
+    CHECK(CGAL::compute_mean_normal_angle_entropy<CGAL::Sequential_tag>(
+            many_copies, k, CGAL::parameters::default_values(), options) ==
+          Approx(mean_of(few_copies, 200000 - (k + 1))).epsilon(1e-9)); // 200,000 sums against one product
+  }
   SECTION("a planar cloud reaches the maximum log2(k + 1)")
   {
     std::vector<Point> plane;

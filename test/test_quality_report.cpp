@@ -12,6 +12,7 @@
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
 #include <CGAL/Entropy_simplification/measure_simplification_quality.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 
 #include <Eigen/Dense>
@@ -25,6 +26,7 @@
 
 namespace ES = CGAL::Entropy_simplification;
 using test_clouds::Point;
+using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 namespace {
 
@@ -81,10 +83,20 @@ ES::Quality_report reference_report(const std::vector<Point>& input, const std::
       covariance += e * e.transpose();
     }
     const Eigen::Vector3d v = Eigen::Vector3d(p.x(), p.y(), p.z()) - centroid;
-    const double plane_distance =
-      covariance.trace() == 0.
-        ? v.norm()
-        : std::abs(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0).dot(v));
+    // points that coincide or lie on one line: the distance to them
+    const auto distinct = std::find_if(near.begin(), near.end(), [&](std::size_t j) { return kept[j] != kept[q]; });
+    const bool on_a_line =
+      distinct != near.end() && std::all_of(near.begin(), near.end(), [&](std::size_t j) {
+        return CGAL::collinear(Exact::Point_3(kept[q].x(), kept[q].y(), kept[q].z()),
+                               Exact::Point_3(kept[*distinct].x(), kept[*distinct].y(), kept[*distinct].z()),
+                               Exact::Point_3(kept[j].x(), kept[j].y(), kept[j].z()));
+      });
+    const Point& along = distinct == near.end() ? kept[q] : kept[*distinct];
+    const Eigen::Vector3d line(along.x() - kept[q].x(), along.y() - kept[q].y(), along.z() - kept[q].z());
+    const Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0);
+    const double plane_distance = distinct == near.end() ? distance(p, kept[q])
+                                  : on_a_line            ? v.cross(line).norm() / line.norm()
+                                                         : std::abs(normal.dot(v));
     squares += plane_distance * plane_distance;
   }
   r.mean_distance = sum / double(input.size()) / unit;
@@ -143,6 +155,39 @@ TEST_CASE("Quality report: equals the reference, on simplifications and on point
   }
 }
 
+TEST_CASE("Quality report: copies among the kept points, in any number", "[quality report][duplicates]")
+{
+  test_parallel::require_tbb();
+  const std::vector<Point> input = test_clouds::wavy_surface(1500, 0.01, 5).points;
+  std::vector<Point> kept;
+  for (std::size_t i = 0; i < input.size(); i += 5)
+    kept.push_back(input[i]);
+  // groups of copies on either side of the ten points of a plane, and one
+  // larger, so that a kept point's neighbours are some, all or none of them
+  std::size_t group = 0;
+  for (std::size_t copies : { 1, 8, 9, 10, 11, 25, 2500 })
+  {
+    const Point copied = kept[40 * group + 1];
+    kept.insert(kept.end() - std::ptrdiff_t(3 * group), copies, copied);
+    ++group;
+  }
+  require_equal_to_reference<CGAL::Sequential_tag>(input, kept);
+  test_parallel::on_two_threads_or_more(
+    [&] { require_equal_to_reference<test_parallel::Parallel_tag>(input, kept); });
+
+  // 200,000 more copies of the point that has 2,500 are measured as these
+  // were: each copy visited the others in each search, for minutes
+  const ES::Quality_report before = CGAL::measure_simplification_quality<CGAL::Sequential_tag>(input, kept);
+  std::vector<Point> many = kept;
+  many.insert(many.begin() + 300, 200000, kept[241]);
+  const ES::Quality_report after = test_parallel::on_two_threads_or_more(
+    [&] { return CGAL::measure_simplification_quality<test_parallel::Parallel_tag>(input, many); });
+  REQUIRE(after.kept_size == kept.size() + 200000);
+  REQUIRE(after.mean_distance == before.mean_distance);
+  REQUIRE(after.max_distance == before.max_distance);
+  REQUIRE(after.point_to_plane == before.point_to_plane);
+}
+
 TEST_CASE("Quality report: the sequential and parallel reports are equal to the last bit", "[quality report]")
 {
   test_parallel::require_tbb();
@@ -187,6 +232,14 @@ TEST_CASE("Quality report: bad input gets a documented behaviour", "[quality rep
   REQUIRE_THROWS_AS(CGAL::measure_simplification_quality<CGAL::Sequential_tag>(input, with_nan),
                     std::invalid_argument);
 
+  // distinct kept points too near to be told apart, which every search
+  // among them would visit: an error, as for the simplification
+  std::vector<Point> cluster = input;
+  for (int i = 0; i < 3000; ++i)
+    cluster.emplace_back(1e-200 * (i % 17), 1e-200 * (i % 13), 1e-200 * i);
+  REQUIRE_THROWS_WITH(CGAL::measure_simplification_quality<CGAL::Sequential_tag>(input, cluster),
+                      Catch::Contains("closer than about 1.5e-154"));
+
   // one or two kept points span no plane
   for (std::size_t m : { 1, 2 })
   {
@@ -196,6 +249,13 @@ TEST_CASE("Quality report: bad input gets a documented behaviour", "[quality rep
     REQUIRE(r.max_distance > 0.);
     require_equal_to_reference<CGAL::Sequential_tag>(input, few);
   }
+  // kept points on one line span no plane: the distance to the line stands
+  // for the plane's (5 from the line for the third input point, by hand)
+  const std::vector<Point> corners = { Point(0., 0., 0.), Point(2., 0., 0.), Point(1., 3., 4.) };
+  const std::vector<Point> on_a_line = { Point(0., 0., 0.), Point(1., 0., 0.), Point(2., 0., 0.) };
+  REQUIRE(CGAL::measure_simplification_quality<CGAL::Sequential_tag>(corners, on_a_line).point_to_plane ==
+          Approx(std::sqrt(25. / 3.) / std::sqrt(29.)).epsilon(1e-15));
+  require_equal_to_reference<CGAL::Sequential_tag>(input, on_a_line);
   // kept points that all coincide: the distance to them stands for the plane's
   const std::vector<Point> same(5, input[3]);
   require_equal_to_reference<CGAL::Sequential_tag>(input, same);

@@ -10,6 +10,7 @@
 
 #include <CGAL/Entropy_simplification/Options.h>
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Paper_simplification.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
@@ -37,7 +38,10 @@ namespace CGAL {
    Everything is computed on the given points alone, exactly as
    `CGAL::entropy_simplify_point_set()` computes the importance of a point
    before any removal (same neighbourhoods, normals, angles and conventions),
-   converted from nats to bits. The paper does not say which reference plane
+   converted from nats to bits. Coincident points count in the mean, each
+   with its `k` nearest neighbours, which may be its copies; past the
+   first `k + 1` copies of a point, a copy has the importance of the
+   first, and no search looks at it. The paper does not say which reference plane
    the angles of Eq. 6 use: by default the plane is fitted to the given points;
    to compare several simplifications of one input, pass the normal of the
    input's plane in `Options::reference_normal` (it is the normal of the plane
@@ -107,20 +111,24 @@ double compute_mean_normal_angle_entropy(const PointRange& points, unsigned int 
                                 " is too small for the normal estimation or too large for " +
                                 std::to_string(input.size()) + " points");
 
+  const std::size_t n = input.size();
   const ES::Working_vector reference = ES::reference_normal(options, input);
-  const ES::Indexed_points indexed = ES::sort_spatially<ConcurrencyTag>(std::move(input));
+  // Copies count in the mean, but past the first k + 1 of a point they are
+  // no point's neighbours and repeat the first's importance.
+  ES::Limited_copies limited = ES::limit_copies<ConcurrencyTag>(std::move(input), std::size_t(k) + 1);
+  const ES::Indexed_points indexed = ES::sort_spatially<ConcurrencyTag>(std::move(limited.points));
   ES::Paper_simplification state(indexed, k, options, reference);
   state.template initialize<ConcurrencyTag>([](double) { return true; });
 
-  // Summed in input order, so that the result does not depend on the
-  // package's internal order.
   ES::Array<double> importance(indexed.size());
   for (ES::Index i = 0; i < ES::Index(indexed.size()); ++i)
     importance[indexed.input_position[i]] = state.importance(i);
+  // Summed in input order, so that the result does not depend on the
+  // package's internal order.
   double sum = 0.;
-  for (double h : importance)
-    sum += h;
-  return sum / double(importance.size()) / std::log(2.);
+  for (std::size_t i = 0; i < n; ++i)
+    sum += importance[limited.stand_in[i]];
+  return sum / double(n) / std::log(2.);
 }
 
 } // namespace CGAL

@@ -10,12 +10,14 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Entropy_simplification/internal/Array.h>
+#include <CGAL/Entropy_simplification/internal/Distinct_points.h>
 #include <CGAL/Entropy_simplification/internal/Indexed_points.h>
 #include <CGAL/Entropy_simplification/internal/Point_tree.h>
 #include <CGAL/Entropy_simplification/internal/for_each_index.h>
 #include <CGAL/Entropy_simplification/internal/local_normal.h>
 #include <CGAL/Entropy_simplification/internal/named_parameters.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -47,7 +49,9 @@ struct Quality_report
   /// the root mean square distance from each input point to the plane fitted
   /// (by PCA) to the 10 kept points nearest its nearest kept point, that
   /// point included (to all of them when fewer are kept); where these kept
-  /// points coincide, the distance to them. Not a number when fewer than 3
+  /// points lie on one line (exactly, as copies of two points do), the
+  /// distance to that line, and where they coincide, the distance to them.
+  /// Not a number when fewer than 3
   /// points are kept, as they span no plane.
   double point_to_plane = 0.;
   /// the diagonal of the input's bounding box, in the input's unit
@@ -97,9 +101,35 @@ Indexed_points input_then_kept(const Array<Working_point>& input, const Array<Wo
 
 struct Local_plane
 {
-  Working_vector normal; // unit, or null where the points coincide
+  Working_vector normal; // unit, or null where the points span no plane
+  Working_vector line;   // along the points where they lie on one line, or null
   Working_point centroid;
 };
+
+// The plane of the `m` points, or where they span none, their line or their
+// common point, told apart exactly: PCA's normal is then any of several,
+// and rounding (in the centroid of copies, say) would pick one.
+template <typename PointAt>
+Local_plane local_plane(std::size_t m, PointAt point)
+{
+  Local_plane plane{ CGAL::NULL_VECTOR, CGAL::NULL_VECTOR, point(0) };
+  std::size_t other = 1;
+  while (other < m && point(other) == point(0))
+    ++other;
+  if (other == m)
+    return plane;
+  using Exact_predicates = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto exact = [&](std::size_t j) { return Exact_predicates::Point_3(point(j).x(), point(j).y(), point(j).z()); };
+  std::size_t j = other + 1;
+  while (j < m && CGAL::collinear(exact(0), exact(other), exact(j)))
+    ++j;
+  plane.centroid = centroid_of(m, point);
+  if (j == m)
+    plane.line = point(other) - point(0);
+  else
+    plane.normal = pca_normal(m, point);
+  return plane;
+}
 
 // The plane of each kept point, from it and its nearest kept points, by its
 // rank among the kept ones (its position in `all` less `input_size`).
@@ -108,29 +138,33 @@ Array<Local_plane> kept_planes(const Indexed_points& all, const Array<Index>& ke
                                const Point_tree& kept_tree)
 {
   const std::size_t m = kept_ids.size();
-  const std::size_t others = (std::min)(std::size_t(quality_plane_points), m) - 1;
+  const unsigned int others = unsigned((std::min)(std::size_t(quality_plane_points), m)) - 1;
+  Array<Index> near;
+  nearest_neighbor_table<ConcurrencyTag>(kept_tree, kept_ids, others, near, [](std::size_t) { return true; });
   Array<Local_plane> planes(m);
   for_each_index<ConcurrencyTag>(
     m,
     [&](std::size_t r) {
-      thread_local Array<Neighbor> near;
       const Index c = kept_ids[r];
-      kept_tree.nearest(c, others, near);
-      auto point = [&](std::size_t j) -> const Working_point& { return all.points[j == 0 ? c : near[j - 1].id]; };
-      planes[all.input_position[c] - input_size] = Local_plane{ pca_normal(others + 1, point),
-                                                                centroid_of(others + 1, point) };
+      auto point = [&](std::size_t j) -> const Working_point& {
+        return all.points[j == 0 ? c : near[r * others + j - 1]];
+      };
+      planes[all.input_position[c] - input_size] = local_plane(others + 1, point);
     },
     [](std::size_t) { return true; });
   return planes;
 }
 
-// Coincident kept points span no plane, only their common point: the
-// distance to it stands for the plane's.
+// Where the kept points span no plane, the distance to their line or common
+// point stands for the plane's.
 inline double distance_to_plane(const Working_point& p, const Local_plane& plane)
 {
+  const Working_vector offset = p - plane.centroid;
+  if (plane.line != CGAL::NULL_VECTOR)
+    return std::sqrt(CGAL::cross_product(offset, plane.line).squared_length() / plane.line.squared_length());
   if (plane.normal == CGAL::NULL_VECTOR)
-    return std::sqrt(squared_distance(p, plane.centroid));
-  return std::abs((p - plane.centroid) * plane.normal);
+    return std::sqrt(offset.squared_length());
+  return std::abs(offset * plane.normal);
 }
 
 } // namespace internal
@@ -179,8 +213,10 @@ inline double distance_to_plane(const Working_point& p, const Local_plane& plane
 
    \throw std::invalid_argument when either range is empty, when the two
    together hold 2^32 - 1 points or more, or when a coordinate is not finite
-   or exceeds 1e150 in magnitude, or when either range spans less than 1e-150
-   along every axis but more than 0.
+   or exceeds 1e150 in magnitude, when either range spans less than 1e-150
+   along every axis but more than 0, or when two distinct kept points lie
+   closer than about 1.5e-154 to each other (coincident points, in any
+   number, are accepted).
 */
 template <typename ConcurrencyTag, typename InputRange, typename KeptRange,
           typename InputNamedParameters = parameters::Default_named_parameters,
@@ -199,19 +235,22 @@ measure_simplification_quality(const InputRange& input, const KeptRange& kept,
 
   const ES::First_touch_scope<ConcurrencyTag> first_touch;
   const ES::Array<ES::Working_point> input_points = ES::working_points(input, input_np);
-  const ES::Array<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
+  ES::Array<ES::Working_point> kept_points = ES::working_points(kept, kept_np);
   if (input_points.empty() || kept_points.empty())
     throw std::invalid_argument(std::string("measure_simplification_quality: the ") +
                                 (input_points.empty() ? "input" : "simplification") + " is empty");
   Entropy_simplification::Quality_report report;
   report.input_size = input_points.size();
   report.kept_size = kept_points.size();
+  // Past the first few of a group of coincident kept points, a copy is no
+  // input point's nearest, ties going to the first, nor on any plane.
+  kept_points = ES::limit_copies<ConcurrencyTag>(std::move(kept_points), ES::quality_plane_points).points;
   report.diagonal = ES::bounding_box_diagonal(input_points);
 
   const std::size_t n = report.input_size;
   const ES::Indexed_points all = ES::input_then_kept<ConcurrencyTag>(input_points, kept_points);
   ES::Array<ES::Index> kept_ids;
-  kept_ids.reserve(report.kept_size);
+  kept_ids.reserve(kept_points.size());
   for (std::size_t i = 0; i < all.size(); ++i)
     if (all.input_position[i] >= n)
       kept_ids.push_back(ES::Index(i));

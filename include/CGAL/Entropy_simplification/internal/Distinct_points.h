@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Entropy_simplification authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Coincident points collapsed to one representative before either mode runs.
+// Coincident points collapsed to one representative before either mode runs,
+// or cut to the few that a measure of them all reads.
 
 #ifndef CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
 #define CGAL_ENTROPY_SIMPLIFICATION_INTERNAL_DISTINCT_POINTS_H
@@ -221,6 +222,46 @@ Distinct_points collapse_duplicates(Array<Working_point> points)
     }
   }
   points.resize(result.input_position.size());
+  result.points = std::move(points);
+  return result;
+}
+
+// The points of a range with each group of coincident points cut to its
+// first `count` in input order, and for each point of the range the index
+// among those that remain of itself or, where it was cut, of its group's
+// first. A computation that reads at most `count - 1` neighbours of a point,
+// in the package's neighbour order (by distance, then input position), finds
+// the same ones among the remaining points, as later copies come after
+// `count` at the same distance, so a copy that was cut takes the result of
+// its group's first. Without the cut, c copies of a point would each visit
+// the others in every search: c^2 visits.
+struct Limited_copies
+{
+  Array<Working_point> points;
+  Array<Index> stand_in;
+};
+
+template <typename ConcurrencyTag>
+Limited_copies limit_copies(Array<Working_point> points, std::size_t count)
+{
+  const Array<Index> first = first_equal_points<ConcurrencyTag>(points);
+  Limited_copies result;
+  result.stand_in.resize(points.size());
+  Array<Index> copies_so_far(points.size(), 0); // by each group's first
+  std::size_t remaining = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Index group = first[i];
+    if (copies_so_far[group] < count)
+    {
+      ++copies_so_far[group];
+      result.stand_in[i] = Index(remaining);
+      points[remaining++] = points[i];
+    }
+    else
+      result.stand_in[i] = result.stand_in[group];
+  }
+  points.resize(remaining);
   result.points = std::move(points);
   return result;
 }

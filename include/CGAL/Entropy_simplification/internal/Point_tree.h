@@ -561,7 +561,7 @@ private:
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest
 // first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
-// k points besides each query, none of them coinciding. Returns false when
+// k points besides each query. Returns false when
 // `progress` asked to stop; throws std::invalid_argument when two of the
 // points are too near to be told apart (see too_near_to_tell_apart). The
 // table, large with a large k, grows 4M entries at a time.
