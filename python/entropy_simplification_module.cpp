@@ -3,7 +3,8 @@
 //
 // The Python module entropy_simplification: the package on NumPy arrays of
 // points. Each function takes an (n, 3) array of float64 or float32, of any
-// strides (copied where needed), and the library's options as keywords; it
+// strides (copied where needed; not complex, nor masked with values masked),
+// and the library's options as keywords; it
 // releases the GIL while it computes, and Ctrl-C raises KeyboardInterrupt at
 // the library's next progress call.
 
@@ -93,8 +94,27 @@ std::optional<Array> converted(const py::handle& object)
   }
 }
 
+// Throws where NumPy would convert `object` silently but lose what it holds:
+// the masked values of a masked array, the imaginary parts of complex
+// numbers; or read it as numbers it does not hold: booleans, text, dates.
+void require_real_values(const py::handle& object, const char* name)
+{
+  const py::module_ numpy = py::module_::import("numpy");
+  if (numpy.attr("ma").attr("is_masked")(object).cast<bool>())
+    throw std::invalid_argument(std::string(name) + " is a masked array with masked values: pass the rows to keep, "
+                                                    "as " + name + "[~" + name + ".mask.any(axis=1)]");
+  if (!py::isinstance<py::array>(object))
+    return;
+  const py::array array = py::reinterpret_borrow<py::array>(object);
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'O')
+    throw std::invalid_argument(std::string(name) + " must hold real numbers, not values of dtype " +
+                                std::string(py::str(array.dtype())));
+}
+
 Rows rows_of(const py::handle& points, const char* name)
 {
+  require_real_values(points, name);
   const std::optional<Points_array> array = converted<Points_array>(points);
   if (!array || array->ndim() != 2 || array->shape(1) != 3)
     throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
@@ -144,14 +164,15 @@ std::string text(const py::object& value, const char* name)
 }
 
 // A keyword's value as a whole number (an int or a NumPy integer, not a
-// bool), or ValueError.
-long long whole_number(const py::object& value, const char* name)
+// bool) that `convert` takes (PyLong_AsLongLong, say), or ValueError.
+template <typename Integer>
+Integer whole_number(const py::object& value, const char* name, Integer (*convert)(PyObject*))
 {
   if (is_boolean(value) || !PyIndex_Check(value.ptr()))
     throw std::invalid_argument(std::string(name) + " must be a whole number, got " + repr(value));
   const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
-  const long long n = index ? PyLong_AsLongLong(index.ptr()) : -1;
-  if (!index || (n == -1 && PyErr_Occurred()))
+  const Integer n = index ? convert(index.ptr()) : Integer(-1);
+  if (!index || (n == Integer(-1) && PyErr_Occurred()))
   {
     clear_conversion_error();
     throw std::invalid_argument(std::string(name) + " is out of range, got " + repr(value));
@@ -159,9 +180,19 @@ long long whole_number(const py::object& value, const char* name)
   return n;
 }
 
-// A keyword's value as a number, or ValueError.
+long long whole_number(const py::object& value, const char* name)
+{
+  return whole_number<long long>(value, name, PyLong_AsLongLong);
+}
+
+// A keyword's value as a number, or ValueError. A NumPy float32 or float16
+// stands for the decimal it prints as: float32's 0.1 is 0.100000001490116,
+// and as a ratio would keep 201 points of 2,000.
 double real_number(const py::object& value, const char* name)
 {
+  if (py::isinstance(value, py::module_::import("numpy").attr("floating")) &&
+      value.attr("dtype").attr("itemsize").cast<int>() < int(sizeof(double)))
+    return real_number(py::float_(py::str(value)), name);
   const bool number = !is_boolean(value) && PyNumber_Check(value.ptr());
   const double x = number ? PyFloat_AsDouble(value.ptr()) : 0.;
   if (!number || (x == -1. && PyErr_Occurred()))
@@ -187,10 +218,12 @@ Call_options call_options(const py::object& ratio, const py::object& count, cons
   }
   if (!count.is_none())
   {
-    const long long n = whole_number(count, "count");
-    if (n < 1)
-      throw std::invalid_argument("count must be at least 1, got " + std::to_string(n));
-    c.count = std::size_t(n);
+    // up to 2^64 - 1, as the program's --count: a count above the number
+    // of points keeps them all
+    if (!is_boolean(count) && PyIndex_Check(count.ptr()) &&
+        py::reinterpret_steal<py::object>(PyNumber_Index(count.ptr())) < py::int_(1))
+      throw std::invalid_argument("count must be at least 1, got " + repr(count));
+    c.count = std::size_t(whole_number<unsigned long long>(count, "count", PyLong_AsUnsignedLongLong));
   }
   const long long kk = whole_number(k, "k");
   if (kk < 0 || kk > 1000000)
@@ -360,6 +393,8 @@ void require_distinct(std::vector<std::size_t> indices)
 // floats, which would be truncated, are refused.
 std::vector<std::size_t> kept_indices_of(const py::handle& object, std::size_t n)
 {
+  if (py::module_::import("numpy").attr("ma").attr("is_masked")(object).cast<bool>())
+    throw std::invalid_argument("kept_idx is a masked array with masked values: pass kept_idx.compressed()");
   const std::optional<py::array> converted_array = converted<py::array>(object);
   if (!converted_array || converted_array->ndim() != 1)
     throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
@@ -402,7 +437,8 @@ PYBIND11_MODULE(entropy_simplification, m)
 {
   m.doc() = "Point cloud simplification by the local entropy of normals (CGAL package Entropy_simplification).";
   const char* options_doc =
-    "ratio: the fraction of the points to keep, in (0, 1]; count: the number of points to keep.\n"
+    "ratio: the fraction of the points to keep, in (0, 1] (a float32 as the decimal it prints as);\n"
+    "count: the number of points to keep, up to 2**64 - 1 (all of them when above their number).\n"
     "k: neighbours per point (default 10). mode: 'default' or 'paper'. feature_weight: default mode,\n"
     "features keep up to 1 + W times the density of flat regions (default 3). normals: 'pca' or 'jet'.\n"
     "order: paper mode, 'lowest' (default) or 'highest' entropy removed first. threads: at most N\n"

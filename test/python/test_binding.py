@@ -114,6 +114,16 @@ def test_any_layout_and_float32(kitten):
 
 def test_options_and_threads(kitten):
     expected = es.simplify(kitten, ratio=0.1)
+    # a float32 ratio is the decimal it prints as: float32's 0.1 lies above
+    # 0.1 and, read as it is, kept one point more
+    np.testing.assert_array_equal(es.simplify(kitten, ratio=np.float32(0.1)), expected)
+    np.testing.assert_array_equal(es.simplify(kitten, ratio=np.float16(0.1)), expected)
+    # any count up to 2**64 - 1, as the program's --count: all of the points
+    everything = es.simplify(kitten, count=len(kitten))
+    np.testing.assert_array_equal(es.simplify(kitten, count=2 ** 64 - 1), everything)
+    np.testing.assert_array_equal(es.simplify(kitten, count=np.uint64(2 ** 64 - 1)), everything)
+    # a masked array with nothing masked is its data
+    np.testing.assert_array_equal(es.simplify(np.ma.masked_array(kitten), ratio=0.1), expected)
     np.testing.assert_array_equal(es.simplify(kitten, count=np.int64(521), k=np.int32(10)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=1), expected)
     # more threads than the machine runs: as many as it runs (TBB would
@@ -160,6 +170,15 @@ def test_empty_input():
     (lambda p: es.simplify(p, ratio="a tenth"), "ratio must be a number, got 'a tenth'"),
     (lambda p: es.simplify(p, count=2.5), "count must be a whole number, got 2.5"),
     (lambda p: es.simplify(p, count=2 ** 70), "count is out of range"),
+    (lambda p: es.simplify(p, count=2 ** 64), "count is out of range, got 18446744073709551616"),
+    (lambda p: es.simplify(p, count=-2 ** 70), "count must be at least 1"),
+    (lambda p: es.simplify(p.astype(complex), count=10), "points must hold real numbers, not values of dtype complex128"),
+    (lambda p: es.simplify(p.astype(str), count=10), "points must hold real numbers, not values of dtype <U"),
+    (lambda p: es.importance(p > 0.), "points must hold real numbers, not values of dtype bool"),
+    (lambda p: es.ranks(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)),
+     "points is a masked array with masked values"),
+    (lambda p: es.report(p, np.ma.masked_array(np.arange(10), mask=np.arange(10) == 9)),
+     r"kept_idx is a masked array with masked values: pass kept_idx.compressed\(\)"),
     (lambda p: es.simplify(p, count=10, k="ten"), "k must be a whole number"),
     (lambda p: es.simplify(p, count=10, threads=True), "threads must be a whole number"),
     (lambda p: es.report(p, np.array([0, len(p)])), "not an index of the"),
