@@ -518,6 +518,16 @@ TEST_CASE("read_cloud: empty files, no points and non-finite coordinates are err
   CHECK_THROWS_WITH(es::read_cloud("-nan 2 3\n", es::Format::xyz), Catch::Contains("point #0"));
   // a non-finite normal is a property like any other, kept as read
   CHECK(es::read_cloud("1 2 3 nan 0 1\n", es::Format::xyz).size() == 1);
+  // a UTF-8 byte order mark, in every text format
+  for (const auto& text : { std::make_pair(es::Format::xyz, "1 2 3\n4 5 6\n"),
+                            std::make_pair(es::Format::off, "OFF\n1 0 0\n1 2 3\n"),
+                            std::make_pair(es::Format::ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float "
+                                                            "x\nproperty float y\nproperty float z\nend_header\n1 2 3\n") })
+  {
+    CHECK(es::read_cloud(text.second, text.first).size() >= 1);
+    CHECK_THROWS_WITH(es::read_cloud(std::string("\xEF\xBB\xBF") + text.second, text.first),
+                      Catch::StartsWith("the file starts with a UTF-8 byte order mark (bytes EF BB BF)"));
+  }
 }
 
 TEST_CASE("Numbers as text: signs, extremes, and what is not a number", "[program]")

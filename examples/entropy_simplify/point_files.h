@@ -87,6 +87,11 @@ inline Cloud read_cloud(std::string_view bytes, Format format)
 {
   if (bytes.empty())
     throw Read_error("the file is empty");
+  // which editors on Windows write at the start of text, and none of these
+  // formats allows: read on, it would be the first line's garbled start
+  if (format != Format::las && bytes.substr(0, 3) == "\xEF\xBB\xBF")
+    throw Read_error("the file starts with a UTF-8 byte order mark (bytes EF BB BF), which the format does not "
+                     "allow: remove it, for example with sed -i '1s/^\\xEF\\xBB\\xBF//' FILE");
   Cloud cloud;
   switch (format)
   {

@@ -174,6 +174,7 @@ def main():
     write("huge_coordinate.xyz", xyz_text(points) + "1e155 0 0\n")
     write("tiny_extent.xyz", xyz_text([(x * 1e-200, y * 1e-200, z * 1e-200) for x, y, z in points]))
     write("too_near.xyz", xyz_text(points + [(x * 1e-200, y * 1e-200, z * 1e-200) for x, y, z in points]))
+    write("byte_order_mark.xyz", b"\xef\xbb\xbf" + xyz_text(points).encode())
     write("words.xyz", "hello world and more\n")
     write("mixed_widths.xyz", xyz_text(points[:10]) + "0 0 0 0 0 1\n")
     write("triangle_soup.xyz", "0 0 0 1 0 0 0 1 0\n" * 20)
