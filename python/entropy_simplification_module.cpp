@@ -94,28 +94,51 @@ std::optional<Array> converted(const py::handle& object)
   }
 }
 
-// Throws where NumPy would convert `object` silently but lose what it holds:
-// the masked values of a masked array, the imaginary parts of complex
-// numbers; or read it as numbers it does not hold: booleans, text, dates.
-void require_real_values(const py::handle& object, const char* name)
+// `object` as NumPy reads it, values unconverted and masked arrays kept as
+// such (numpy.asanyarray), or none as for clear_conversion_error.
+std::optional<py::object> as_numpy_array(const py::handle& object)
 {
-  const py::module_ numpy = py::module_::import("numpy");
-  if (numpy.attr("ma").attr("is_masked")(object).cast<bool>())
-    throw std::invalid_argument(std::string(name) + " is a masked array with masked values: pass the rows to keep, "
-                                                    "as " + name + "[~" + name + ".mask.any(axis=1)]");
-  if (!py::isinstance<py::array>(object))
-    return;
-  const py::array array = py::reinterpret_borrow<py::array>(object);
-  const char kind = array.dtype().kind();
-  if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'O')
+  try
+  {
+    return py::module_::import("numpy").attr("asanyarray")(object);
+  }
+  catch (py::error_already_set& e)
+  {
+    e.restore();
+    clear_conversion_error();
+    return std::nullopt;
+  }
+}
+
+// Throws when `array` (see as_numpy_array) is a masked array with masked
+// values: NumPy would read the values under the mask.
+void require_nothing_masked(const py::object& array, const std::string& name, const std::string& remedy)
+{
+  const py::object ma = py::module_::import("numpy").attr("ma");
+  if (py::isinstance(array, ma.attr("MaskedArray")) && ma.attr("is_masked")(array).cast<bool>())
+    throw std::invalid_argument(name + " is a masked array with masked values: pass " + remedy);
+}
+
+// The points as an array of real numbers, or ValueError where NumPy would
+// convert them silently but lose what they hold (masked values, imaginary
+// parts) or read them as numbers they do not hold (booleans, text, dates,
+// Python objects).
+py::object real_values(const py::handle& points, const char* name)
+{
+  const std::optional<py::object> array = as_numpy_array(points);
+  if (!array)
+    throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
+  require_nothing_masked(*array, name, std::string("the rows to keep, as ") + name + "[~" + name + ".mask.any(axis=1)]");
+  const py::dtype dtype = py::reinterpret_borrow<py::array>(*array).dtype();
+  if (dtype.kind() != 'f' && dtype.kind() != 'i' && dtype.kind() != 'u')
     throw std::invalid_argument(std::string(name) + " must hold real numbers, not values of dtype " +
-                                std::string(py::str(array.dtype())));
+                                std::string(py::str(static_cast<const py::handle&>(dtype))));
+  return *array;
 }
 
 Rows rows_of(const py::handle& points, const char* name)
 {
-  require_real_values(points, name);
-  const std::optional<Points_array> array = converted<Points_array>(points);
+  const std::optional<Points_array> array = converted<Points_array>(real_values(points, name));
   if (!array || array->ndim() != 2 || array->shape(1) != 3)
     throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
   Rows result{ *array, std::vector<std::size_t>(std::size_t(array->shape(0))), Row_point_map{ array->data() } };
@@ -163,16 +186,29 @@ std::string text(const py::object& value, const char* name)
   return value.cast<std::string>();
 }
 
-// A keyword's value as a whole number (an int or a NumPy integer, not a
-// bool) that `convert` takes (PyLong_AsLongLong, say), or ValueError.
+// A keyword's value as a Python int (from an int or a NumPy integer, not a
+// bool), or ValueError.
+py::int_ whole_index(const py::object& value, const char* name)
+{
+  const py::object index = is_boolean(value) || !PyIndex_Check(value.ptr())
+                             ? py::object()
+                             : py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!index || !PyLong_Check(index.ptr()))
+  {
+    clear_conversion_error();
+    throw std::invalid_argument(std::string(name) + " must be a whole number, got " + repr(value));
+  }
+  return py::reinterpret_borrow<py::int_>(index);
+}
+
+// The same, as the integer type that `convert` gives (PyLong_AsLongLong,
+// say), or ValueError.
 template <typename Integer>
 Integer whole_number(const py::object& value, const char* name, Integer (*convert)(PyObject*))
 {
-  if (is_boolean(value) || !PyIndex_Check(value.ptr()))
-    throw std::invalid_argument(std::string(name) + " must be a whole number, got " + repr(value));
-  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
-  const Integer n = index ? convert(index.ptr()) : Integer(-1);
-  if (!index || (n == Integer(-1) && PyErr_Occurred()))
+  const py::int_ index = whole_index(value, name);
+  const Integer n = convert(index.ptr());
+  if (n == Integer(-1) && PyErr_Occurred())
   {
     clear_conversion_error();
     throw std::invalid_argument(std::string(name) + " is out of range, got " + repr(value));
@@ -185,14 +221,23 @@ long long whole_number(const py::object& value, const char* name)
   return whole_number<long long>(value, name, PyLong_AsLongLong);
 }
 
-// A keyword's value as a number, or ValueError. A NumPy float32 or float16
-// stands for the decimal it prints as: float32's 0.1 is 0.100000001490116,
-// and as a ratio would keep 201 points of 2,000.
+// A keyword's value as a number, or ValueError. A NumPy value is one real
+// number (a scalar or an array of no dimension), and a float32 or float16
+// stands for the decimal NumPy prints it as: float32's 0.1 is
+// 0.100000001490116, and as a ratio would keep 201 points of 2,000.
 double real_number(const py::object& value, const char* name)
 {
-  if (py::isinstance(value, py::module_::import("numpy").attr("floating")) &&
-      value.attr("dtype").attr("itemsize").cast<int>() < int(sizeof(double)))
-    return real_number(py::float_(py::str(value)), name);
+  const py::module_ numpy = py::module_::import("numpy");
+  if (py::isinstance<py::array>(value) || py::isinstance(value, numpy.attr("generic")))
+  {
+    const py::array array = numpy.attr("asarray")(value);
+    const char kind = array.dtype().kind();
+    if (array.ndim() != 0 || (kind != 'f' && kind != 'i' && kind != 'u'))
+      throw std::invalid_argument(std::string(name) + " must be a number, got " + repr(value));
+    if (kind == 'f' && array.dtype().itemsize() < py::ssize_t(sizeof(double)))
+      return real_number(py::float_(numpy.attr("format_float_positional")(array[py::tuple()])), name);
+    return array[py::tuple()].cast<double>();
+  }
   const bool number = !is_boolean(value) && PyNumber_Check(value.ptr());
   const double x = number ? PyFloat_AsDouble(value.ptr()) : 0.;
   if (!number || (x == -1. && PyErr_Occurred()))
@@ -220,8 +265,7 @@ Call_options call_options(const py::object& ratio, const py::object& count, cons
   {
     // up to 2^64 - 1, as the program's --count: a count above the number
     // of points keeps them all
-    if (!is_boolean(count) && PyIndex_Check(count.ptr()) &&
-        py::reinterpret_steal<py::object>(PyNumber_Index(count.ptr())) < py::int_(1))
+    if (whole_index(count, "count") < py::int_(1))
       throw std::invalid_argument("count must be at least 1, got " + repr(count));
     c.count = std::size_t(whole_number<unsigned long long>(count, "count", PyLong_AsUnsignedLongLong));
   }
@@ -393,9 +437,10 @@ void require_distinct(std::vector<std::size_t> indices)
 // floats, which would be truncated, are refused.
 std::vector<std::size_t> kept_indices_of(const py::handle& object, std::size_t n)
 {
-  if (py::module_::import("numpy").attr("ma").attr("is_masked")(object).cast<bool>())
-    throw std::invalid_argument("kept_idx is a masked array with masked values: pass kept_idx.compressed()");
-  const std::optional<py::array> converted_array = converted<py::array>(object);
+  const std::optional<py::object> as_read = as_numpy_array(object);
+  if (as_read)
+    require_nothing_masked(*as_read, "kept_idx", "kept_idx.compressed()");
+  const std::optional<py::array> converted_array = converted<py::array>(as_read ? *as_read : object);
   if (!converted_array || converted_array->ndim() != 1)
     throw std::invalid_argument("kept_idx must be a one-dimensional array of indices");
   const py::array& array = *converted_array;

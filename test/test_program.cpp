@@ -527,6 +527,24 @@ TEST_CASE("read_cloud: empty files, no points and non-finite coordinates are err
     CHECK(es::read_cloud(text.second, text.first).size() >= 1);
     CHECK_THROWS_WITH(es::read_cloud(std::string("\xEF\xBB\xBF") + text.second, text.first),
                       Catch::StartsWith("the file starts with a UTF-8 byte order mark (bytes EF BB BF)"));
+    // UTF-16 and UTF-32 text, either byte order: each character, the mark
+    // first, takes 2 or 4 bytes
+    for (int width : { 2, 4 })
+      for (bool little : { true, false })
+      {
+        const std::string wide = std::string("\xEF\xBB\xBF") + text.second; // the mark, as UTF-8
+        std::string encoded;
+        for (std::size_t c = 0; c < wide.size(); c += c == 0 ? 3 : 1)
+        {
+          const unsigned int code = c == 0 ? 0xFEFF : (unsigned char)wide[c];
+          std::string unit(std::size_t(width), '\0');
+          for (int b = 0; b < width; ++b)
+            unit[std::size_t(little ? b : width - 1 - b)] = char((code >> (8 * b)) & 0xFF);
+          encoded += unit;
+        }
+        CHECK_THROWS_WITH(es::read_cloud(encoded, text.first),
+                          Catch::StartsWith(std::string("the file is UTF-") + (width == 2 ? "16" : "32") + " text"));
+      }
   }
 }
 

@@ -255,6 +255,18 @@ TEST_CASE("Quality report: bad input gets a documented behaviour", "[quality rep
   const std::vector<Point> on_a_line = { Point(0., 0., 0.), Point(1., 0., 0.), Point(2., 0., 0.) };
   REQUIRE(CGAL::measure_simplification_quality<CGAL::Sequential_tag>(corners, on_a_line).point_to_plane ==
           Approx(std::sqrt(25. / 3.) / std::sqrt(29.)).epsilon(1e-15));
+  // at any scale the package takes (squares of lengths near 1e150 or
+  // 1e-150 would overflow or underflow)
+  for (double scale : { std::ldexp(1., 450), std::ldexp(1., -450) })
+  {
+    std::vector<Point> scaled_corners, scaled_line;
+    for (const Point& p : corners)
+      scaled_corners.emplace_back(p.x() * scale, p.y() * scale, p.z() * scale);
+    for (const Point& p : on_a_line)
+      scaled_line.emplace_back(p.x() * scale, p.y() * scale, p.z() * scale);
+    REQUIRE(CGAL::measure_simplification_quality<CGAL::Sequential_tag>(scaled_corners, scaled_line).point_to_plane ==
+            Approx(std::sqrt(25. / 3.) / std::sqrt(29.)).epsilon(1e-15));
+  }
   require_equal_to_reference<CGAL::Sequential_tag>(input, on_a_line);
   // kept points that all coincide: the distance to them stands for the plane's
   const std::vector<Point> same(5, input[3]);

@@ -18,6 +18,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace entropy_simplify {
@@ -79,6 +81,23 @@ inline void check_coordinates(const Point_table& table)
       throw Read_error("point #" + std::to_string(i) + " has a coordinate that is not a finite number");
 }
 
+// Throws Read_error on a text file that starts with a byte order mark, which
+// some editors write and none of the text formats allows: read on, the mark
+// would be the first line's garbled start, or UTF-16 and UTF-32 text every
+// line's.
+inline void refuse_byte_order_mark(std::string_view bytes)
+{
+  using namespace std::string_view_literals;
+  for (const auto& [mark, encoding] : { std::pair{ "\xFF\xFE\0\0"sv, "UTF-32" }, std::pair{ "\0\0\xFE\xFF"sv, "UTF-32" },
+                                        std::pair{ "\xFF\xFE"sv, "UTF-16" }, std::pair{ "\xFE\xFF"sv, "UTF-16" } })
+    if (bytes.substr(0, mark.size()) == mark)
+      throw Read_error(std::string("the file is ") + encoding + " text (it starts with a byte order mark): convert "
+                       "it to ASCII, for example with iconv -f " + encoding + " -t ASCII FILE");
+  if (bytes.substr(0, 3) == "\xEF\xBB\xBF"sv)
+    throw Read_error("the file starts with a UTF-8 byte order mark (bytes EF BB BF), which the format does not "
+                     "allow: remove it, for example with sed -i '1s/^\\xEF\\xBB\\xBF//' FILE");
+}
+
 } // namespace point_files_detail
 
 // Throws Read_error when the file is not of its format, has no points, or a
@@ -87,11 +106,8 @@ inline Cloud read_cloud(std::string_view bytes, Format format)
 {
   if (bytes.empty())
     throw Read_error("the file is empty");
-  // which editors on Windows write at the start of text, and none of these
-  // formats allows: read on, it would be the first line's garbled start
-  if (format != Format::las && bytes.substr(0, 3) == "\xEF\xBB\xBF")
-    throw Read_error("the file starts with a UTF-8 byte order mark (bytes EF BB BF), which the format does not "
-                     "allow: remove it, for example with sed -i '1s/^\\xEF\\xBB\\xBF//' FILE");
+  if (format != Format::las)
+    point_files_detail::refuse_byte_order_mark(bytes);
   Cloud cloud;
   switch (format)
   {

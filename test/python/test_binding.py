@@ -118,6 +118,7 @@ def test_options_and_threads(kitten):
     # 0.1 and, read as it is, kept one point more
     np.testing.assert_array_equal(es.simplify(kitten, ratio=np.float32(0.1)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=np.float16(0.1)), expected)
+    np.testing.assert_array_equal(es.simplify(kitten, ratio=np.array(0.1, dtype=np.float32)), expected)
     # any count up to 2**64 - 1, as the program's --count: all of the points
     everything = es.simplify(kitten, count=len(kitten))
     np.testing.assert_array_equal(es.simplify(kitten, count=2 ** 64 - 1), everything)
@@ -179,6 +180,19 @@ def test_empty_input():
      "points is a masked array with masked values"),
     (lambda p: es.report(p, np.ma.masked_array(np.arange(10), mask=np.arange(10) == 9)),
      r"kept_idx is a masked array with masked values: pass kept_idx.compressed\(\)"),
+    # the same through a list or an object NumPy reads (__array__)
+    (lambda p: es.report((p > 0.).tolist(), [0, 1, 2]), "points must hold real numbers, not values of dtype bool"),
+    (lambda p: es.simplify([[repr(v) for v in row] for row in p], count=10), "not values of dtype <U"),
+    (lambda p: es.simplify(p.astype(object), count=10), "not values of dtype object"),
+    (lambda p: es.simplify(Reads_as(p + 5j), count=10), "not values of dtype complex128"),
+    (lambda p: es.simplify(Reads_as(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), count=10),
+     "points is a masked array with masked values"),
+    (lambda p: es.report(p, Reads_as(np.ma.masked_array(np.arange(10), mask=np.arange(10) == 9))), "masked values"),
+    # one real number, not an array of them or a complex one
+    (lambda p: es.simplify(p, ratio=np.array([0.1])), r"ratio must be a number, got array\(\[0.1\]\)"),
+    (lambda p: es.simplify(p, ratio=np.complex64(0.1 + 0.7j)), "ratio must be a number"),
+    (lambda p: es.simplify(p, count=np.array([5])), r"count must be a whole number, got array\(\[5\]\)"),
+    (lambda p: es.simplify(p, count=Index_of("5")), "count must be a whole number"),
     (lambda p: es.simplify(p, count=10, k="ten"), "k must be a whole number"),
     (lambda p: es.simplify(p, count=10, threads=True), "threads must be a whole number"),
     (lambda p: es.report(p, np.array([0, len(p)])), "not an index of the"),
@@ -199,6 +213,26 @@ def test_empty_input():
 def test_bad_input_raises_value_error(kitten, call, message):
     with pytest.raises(ValueError, match=message):
         call(kitten)
+
+
+class Reads_as:
+    """An object NumPy reads as the array it holds."""
+
+    def __init__(self, array):
+        self.array = array
+
+    def __array__(self, dtype=None, copy=None):
+        return self.array
+
+
+class Index_of:
+    """An object whose __index__ gives what it holds."""
+
+    def __init__(self, value):
+        self.value = value
+
+    def __index__(self):
+        return self.value
 
 
 class Interrupting:

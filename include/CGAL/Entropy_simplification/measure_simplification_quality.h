@@ -156,14 +156,20 @@ Array<Local_plane> kept_planes(const Indexed_points& all, const Array<Index>& ke
 }
 
 // Where the kept points span no plane, the distance to their line or common
-// point stands for the plane's.
+// point stands for the plane's. Lengths by std::hypot, as squares of
+// coordinates near the bounds the package accepts would overflow or
+// underflow.
 inline double distance_to_plane(const Working_point& p, const Local_plane& plane)
 {
   const Working_vector offset = p - plane.centroid;
+  auto length = [](const Working_vector& v) { return std::hypot(v.x(), v.y(), v.z()); };
   if (plane.line != CGAL::NULL_VECTOR)
-    return std::sqrt(CGAL::cross_product(offset, plane.line).squared_length() / plane.line.squared_length());
+  {
+    const Working_vector along = plane.line / length(plane.line);
+    return length(offset - (offset * along) * along);
+  }
   if (plane.normal == CGAL::NULL_VECTOR)
-    return std::sqrt(offset.squared_length());
+    return length(offset);
   return std::abs(offset * plane.normal);
 }
 
@@ -212,7 +218,8 @@ inline double distance_to_plane(const Working_point& p, const Local_plane& plane
    diagonal
 
    \throw std::invalid_argument when either range is empty, when the two
-   together hold 2^32 - 1 points or more, or when a coordinate is not finite
+   together hold 2^32 - 1 points or more (copies of a kept point past its
+   tenth aside), or when a coordinate is not finite
    or exceeds 1e150 in magnitude, when either range spans less than 1e-150
    along every axis but more than 0, or when two distinct kept points lie
    closer than about 1.5e-154 to each other (coincident points, in any
