@@ -618,6 +618,23 @@ TEST_CASE("read_las notes counts that disagree and bytes after the records", "[l
     t.legacy_count = 10;
     CHECK(read_las(build(t)).notes.empty());
   }
+  SECTION("a waveform start outside the bytes after the records is noted, and then the bytes there")
+  {
+    std::string file = build(sample(3, 1));
+    const std::uint64_t end = file.size();
+    for (std::uint64_t start : { std::uint64_t(100), end + 3, std::uint64_t(1) << 40 })
+    {
+      put(file, 227, start);
+      const Las_file las = read_las(file + "xy");
+      REQUIRE(las.notes.size() == 2);
+      CHECK(las.notes[0] == "the start of the waveform data (byte 227) is " + std::to_string(start) +
+                              ", outside bytes " + std::to_string(end) + " (the end of the point data) to " +
+                              std::to_string(end + 2) + " (the end of the file): no waveform data is read there, "
+                              "and a LAS output keeps the field as it is, moved with the end of the point data "
+                              "when it lies beyond");
+      CHECK(las.notes[1].rfind("2 bytes after the 17 point records", 0) == 0);
+    }
+  }
 }
 
 TEST_CASE("local_xyz leaves out the offset, so georeferenced copies agree", "[las]")

@@ -217,7 +217,8 @@ inline std::optional<Settings> parse_command_line(int argc, const char* const* a
   app.add_option("--render", s.render, "draw the input beside the result, coloured by importance, to the PNG "
                                        "file FILE.png (no display needed)")->type_name("FILE.png");
   app.add_option("--indices", s.indices, "write the 0-based input index of each point kept (with --lod, of "
-                                         "every point) to FILE, one per line, by rank")->type_name("FILE");
+                                         "every point) to FILE, one per line, by rank: without --lod, not in "
+                                         "the output's order, which is the input's")->type_name("FILE");
   app.add_option("-k", k, "neighbours per point (default 10; 2-1000, 5-1000 with --normals jet)")->type_name("K");
   app.add_option("--mode", mode, "default | paper: weighted elimination with denser features (default), "
                                  "or the paper's method, which keeps at least k + 1 points")->type_name("M");

@@ -30,6 +30,7 @@
 #include <new>
 #include <optional>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 namespace entropy_simplify {
@@ -86,6 +87,19 @@ Point_table table_to_write(const Settings& s, const Cloud& cloud, const std::vec
   if (s.importance)
     set_column(table, "scalar_importance", Scalar_type::float64, [&](std::size_t r) { return importance[rows[r]]; });
   return table;
+}
+
+// Throws Read_error when a PLY output would replace a property of the input
+// with --lod's ranks or --importance's values, without a word.
+void check_added_properties(const Settings& s, const Cloud& cloud, Format out)
+{
+  if (out != Format::ply)
+    return;
+  for (const auto& [added, name, option] : { std::tuple{ s.lod, "scalar_rank", "--lod" },
+                                             std::tuple{ s.importance, "scalar_importance", "--importance" } })
+    if (added && cloud.table.find(name))
+      throw Read_error(std::string("it already has a property '") + name + "', which " + option +
+                       " would replace: rename it first, or write without " + option);
 }
 
 // What the input holds that is not kept, or that disagrees with its header:
@@ -156,6 +170,7 @@ int run(int argc, char** argv)
   print_input_notes(s, cloud);
   if (s.importance && out == Format::las)
     reading(s.input, [&] { return check_room_for_attribute(*cloud.las, "importance"); });
+  reading(s.input, [&] { return check_added_properties(s, cloud, out); });
 
   // one bar for both passes: the importance takes about a third of a run
   Progress_bar progress(!s.quiet);

@@ -63,18 +63,25 @@ inline std::string descriptor(unsigned type, unsigned options, std::string_view 
 }
 
 // Where the input's Extra Bytes VLR starts, if it has one; read_las()
-// checked that every VLR lies within the file.
+// checked that every VLR lies within the file. Throws Read_error when it has
+// two, which LAS forbids: an attribute added to one would leave the other
+// describing other records.
 inline std::optional<std::size_t> extra_bytes_vlr(const Las_file& las)
 {
+  std::optional<std::size_t> found;
   std::size_t at = las.header_size;
   for (std::size_t i = 0; i < las.vlr_count; ++i)
   {
     const std::string_view user = las.bytes.substr(at + 2, 16);
     if (user.substr(0, user.find('\0')) == "LASF_Spec" && las_detail::field<std::uint16_t>(las, at + 18) == 4)
-      return at;
+    {
+      if (found)
+        throw Read_error("it has two Extra Bytes VLRs, where LAS allows one: an attribute cannot be added to them");
+      found = at;
+    }
     at += las_detail::vlr_header_size + las_detail::field<std::uint16_t>(las, at + 20);
   }
-  return std::nullopt;
+  return found;
 }
 
 // Whether an EVLR holds the Extra Bytes record, which LAS 1.4 allows there;

@@ -220,7 +220,8 @@ inline void check_evlrs(Las_file& las)
 // follow the records, where more records would be if the count were short.
 // Both are read as the header says (the 64-bit count; the records it
 // counts), and noted. The waveform data of LAS 1.3 and 1.4 runs to the
-// EVLRs or the end of the file, so it leaves no bytes unaccounted for.
+// EVLRs or the end of the file, so it leaves no bytes unaccounted for; its
+// start, outside the bytes after the records, is noted and then ignored.
 inline void note_inconsistencies(Las_file& las)
 {
   const std::uint64_t legacy = field<std::uint32_t>(las, legacy_count_at);
@@ -228,7 +229,14 @@ inline void note_inconsistencies(Las_file& las)
     las.notes.push_back("the header's legacy point count (byte 107) is " + std::to_string(legacy) +
                         " and its 64-bit count (byte 247) " + std::to_string(las.point_count) + "; " +
                         std::to_string(las.point_count) + " points were read, as LAS 1.4 asks");
-  if (las.version_minor >= 3 && field<std::uint64_t>(las, waveform_start_at) != 0)
+  const std::uint64_t waveform = las.version_minor >= 3 ? field<std::uint64_t>(las, waveform_start_at) : 0;
+  if (waveform != 0 && (waveform < points_end(las) || waveform > las.bytes.size()))
+    las.notes.push_back("the start of the waveform data (byte 227) is " + std::to_string(waveform) +
+                        ", outside bytes " + std::to_string(points_end(las)) + " (the end of the point data) to " +
+                        std::to_string(las.bytes.size()) + " (the end of the file): no waveform data is read "
+                        "there, and a LAS output keeps the field as it is, moved with the end of the point data "
+                        "when it lies beyond");
+  else if (waveform != 0)
     return;
   const std::size_t unread = las.bytes.size() - points_end(las) - las.evlr_bytes;
   if (unread == 0)

@@ -148,6 +148,18 @@ def main():
     # an Extra Bytes VLR declaring a double the records do not have
     write("grid_overdeclared_extra_bytes.las", las(points, vlr_count=1, vlr=vlr(b"LASF_Spec", 4,
                                                                                 extra_bytes_descriptor(10, b"ghost"))))
+    # two Extra Bytes VLRs, which LAS forbids (2 and 4 of the 6 extra bytes)
+    write("grid_two_extra_bytes_vlrs.las",
+          las(points, extra=6, vlr_count=2, vlr=vlr(b"LASF_Spec", 4, extra_bytes_descriptor(3, b"strength")) +
+              vlr(b"LASF_Spec", 4, extra_bytes_descriptor(5, b"label"))))
+    # LAS 1.3 whose waveform start (byte 227) points into its point records
+    waveform_inside = bytearray(las(points, version=(1, 3)))
+    struct.pack_into("<Q", waveform_inside, 227, 235 + 40)
+    write("grid_waveform_start_inside_points.las", bytes(waveform_inside))
+    # a PLY property named as --lod's ranks
+    write("grid_with_rank.ply", ply_header("ascii", len(points), [("float", "x"), ("float", "y"), ("float", "z"),
+                                                                  ("int", "scalar_rank")]) +
+          "".join("%r %r %r %d\n" % (p + (7,)) for p in points))
     write("grid_cr.xyz", xyz_text(points).replace("\n", "\r"))
 
     # bad input: each file is one row of the table in doc/Entropy_simplification.txt
