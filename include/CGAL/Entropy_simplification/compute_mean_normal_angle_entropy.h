@@ -39,10 +39,10 @@ namespace CGAL {
    `CGAL::entropy_simplify_point_set()` computes the importance of a point
    before any removal (same neighbourhoods, normals, angles and conventions),
    converted from nats to bits. Coincident points count in the mean, each
-   with its `k` nearest neighbours, which may be its copies; past the
-   first `k + 1` copies of a point, a copy has the importance of the
-   first, and no search looks at it. The paper does not say which reference plane
-   the angles of Eq. 6 use: by default the plane is fitted to the given points;
+   with its `k` nearest neighbours, which may be its copies; past the first
+   `k + 1` copies of a point, a copy has the importance of the first, and no
+   search looks at it. The paper does not say which reference plane the
+   angles of Eq. 6 use: by default the plane is fitted to the given points;
    to compare several simplifications of one input, pass the normal of the
    input's plane in `Options::reference_normal` (it is the normal of the plane
    `CGAL::linear_least_squares_fitting_3()` fits to the input).

@@ -51,8 +51,7 @@ struct Quality_report
   /// point included (to all of them when fewer are kept); where these kept
   /// points lie on one line (exactly, as copies of two points do), the
   /// distance to that line, and where they coincide, the distance to them.
-  /// Not a number when fewer than 3
-  /// points are kept, as they span no plane.
+  /// Not a number when fewer than 3 points are kept, as they span no plane.
   double point_to_plane = 0.;
   /// the diagonal of the input's bounding box, in the input's unit
   double diagonal = 0.;
@@ -219,11 +218,10 @@ inline double distance_to_plane(const Working_point& p, const Local_plane& plane
 
    \throw std::invalid_argument when either range is empty, when the two
    together hold 2^32 - 1 points or more (copies of a kept point past its
-   tenth aside), or when a coordinate is not finite
-   or exceeds 1e150 in magnitude, when either range spans less than 1e-150
-   along every axis but more than 0, or when two distinct kept points lie
-   closer than about 1.5e-154 to each other (coincident points, in any
-   number, are accepted).
+   tenth aside), when a coordinate is not finite or exceeds 1e150 in
+   magnitude, when either range spans less than 1e-150 along every axis but
+   more than 0, or when two distinct kept points lie closer than about
+   1.5e-154 to each other (coincident points, in any number, are accepted).
 */
 template <typename ConcurrencyTag, typename InputRange, typename KeptRange,
           typename InputNamedParameters = parameters::Default_named_parameters,

@@ -561,10 +561,10 @@ private:
 
 // The k nearest neighbours in `tree` of each point of `queries`, nearest
 // first: those of `queries[r]` at `table[r * k]`. The tree must hold at least
-// k points besides each query. Returns false when
-// `progress` asked to stop; throws std::invalid_argument when two of the
-// points are too near to be told apart (see too_near_to_tell_apart). The
-// table, large with a large k, grows 4M entries at a time.
+// k points besides each query. Returns false when `progress` asked to stop;
+// throws std::invalid_argument when two of the points are too near to be
+// told apart (see too_near_to_tell_apart). The table, large with a large k,
+// grows 4M entries at a time.
 template <typename ConcurrencyTag, typename Progress>
 bool nearest_neighbor_table(const Point_tree& tree, const Array<Index>& queries, unsigned int k,
                             Array<Index>& table, const Progress& progress)
