@@ -4,9 +4,9 @@
 // The Python module entropy_simplification: the package on NumPy arrays of
 // points. Each function takes an (n, 3) array of float64 or float32, of any
 // strides (copied where needed; not complex, nor masked with values masked),
-// and the library's options as keywords; it
-// releases the GIL while it computes, and Ctrl-C raises KeyboardInterrupt at
-// the library's next progress call.
+// and the library's options as keywords; it releases the GIL while it
+// computes, and Ctrl-C raises KeyboardInterrupt at the library's next
+// progress call.
 
 #include <CGAL/Entropy_simplification/compute_entropy_importance.h>
 #include <CGAL/Entropy_simplification/entropy_simplification_ranks.h>
@@ -76,15 +76,14 @@ void clear_conversion_error()
   PyErr_Clear();
 }
 
-// `object` as an array of `Array`'s type and layout, converted by NumPy
-// where needed; none when NumPy cannot convert it, as for
-// clear_conversion_error.
-template <typename Array>
-std::optional<Array> converted(const py::handle& object)
+// What `conversion()` gives, or none when the Python error it raised is
+// one of a conversion, as for clear_conversion_error.
+template <typename Conversion>
+auto attempted(const Conversion& conversion) -> std::optional<decltype(conversion())>
 {
   try
   {
-    return Array(py::reinterpret_borrow<py::object>(object));
+    return conversion();
   }
   catch (py::error_already_set& e)
   {
@@ -94,20 +93,19 @@ std::optional<Array> converted(const py::handle& object)
   }
 }
 
+// `object` as an array of `Array`'s type and layout, converted by NumPy
+// where needed, or none.
+template <typename Array>
+std::optional<Array> converted(const py::handle& object)
+{
+  return attempted([&] { return Array(py::reinterpret_borrow<py::object>(object)); });
+}
+
 // `object` as NumPy reads it, values unconverted and masked arrays kept as
-// such (numpy.asanyarray), or none as for clear_conversion_error.
+// such (numpy.asanyarray), or none.
 std::optional<py::object> as_numpy_array(const py::handle& object)
 {
-  try
-  {
-    return py::module_::import("numpy").attr("asanyarray")(object);
-  }
-  catch (py::error_already_set& e)
-  {
-    e.restore();
-    clear_conversion_error();
-    return std::nullopt;
-  }
+  return attempted([&] { return py::object(py::module_::import("numpy").attr("asanyarray")(object)); });
 }
 
 // Throws when `array` (see as_numpy_array) is a masked array with masked
