@@ -358,13 +358,8 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
 
 int main(int argc, char** argv)
 {
-  const std::optional<bench::Section_arguments> arguments =
-    bench::section_arguments(argc, argv, "bench_ablation", true);
-  if (!arguments)
-    return 2;
-  const auto& [data, out, quality_file, smoke] = *arguments;
-  try
-  {
+  return bench::run_section(argc, argv, "bench_ablation", true, [](const bench::Section_arguments& arguments) {
+    const auto& [data, out, quality_file, smoke] = arguments;
     // the smoke run's smaller inputs are not those of quality.csv: its peers
     // are read, not compared with
     const auto read = read_peers(quality_file);
@@ -417,11 +412,5 @@ int main(int argc, char** argv)
     }
     write_section(cells, v, peers, smoke);
     write_chart(cells, v, out);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "bench_ablation: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

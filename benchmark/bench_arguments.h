@@ -3,11 +3,13 @@
 //
 // The command line of the programs that print a section of RESULTS.md after
 // run_benchmark: --data DIR (CGAL's demo data), --out DIR, --smoke, and
-// --quality FILE (run_benchmark's quality.csv) for those that read it.
+// --quality FILE (run_benchmark's quality.csv) for those that read it; and
+// how such a program ends.
 
 #ifndef ENTROPY_SIMPLIFICATION_BENCH_ARGUMENTS_H
 #define ENTROPY_SIMPLIFICATION_BENCH_ARGUMENTS_H
 
+#include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -54,6 +56,27 @@ inline std::optional<Section_arguments> section_arguments(int argc, char** argv,
     return std::nullopt;
   }
   return a;
+}
+
+// Runs `section(arguments)` on `program`'s command line (see
+// section_arguments): exit status 2 after a bad command line, 1 after
+// printing what `section` threw, 0 otherwise.
+template <typename Section>
+int run_section(int argc, char** argv, const std::string& program, bool needs_quality, const Section& section)
+{
+  const std::optional<Section_arguments> arguments = section_arguments(argc, argv, program, needs_quality);
+  if (!arguments)
+    return 2;
+  try
+  {
+    section(*arguments);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << program << ": " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
 }
 
 } // namespace bench

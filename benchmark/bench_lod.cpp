@@ -209,12 +209,9 @@ std::vector<Prefix_quality> measure_quality(const bench::Cloud& cloud)
 
 int main(int argc, char** argv)
 {
-  const std::optional<bench::Section_arguments> arguments = bench::section_arguments(argc, argv, "bench_lod");
-  if (!arguments)
-    return 2;
-  const auto& [data, out, quality, smoke] = *arguments;
-  try
-  {
+  return bench::run_section(argc, argv, "bench_lod", false, [](const bench::Section_arguments& arguments) {
+    const std::string &data = arguments.data, &out = arguments.out;
+    const bool smoke = arguments.smoke;
     const std::string lion = data + "/meshes/lion.off";
     ES::Options paper;
     paper.mode = ES::Mode::paper;
@@ -300,11 +297,5 @@ int main(int argc, char** argv)
         }
         std::printf("\n");
       }
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "bench_lod: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

@@ -109,33 +109,47 @@ inline double fitted_plane_rmse(const std::vector<Point>& points)
   return std::sqrt(sum / double(points.size()));
 }
 
+// Per point, over the input's diagonal: each input point's distance to its
+// nearest kept point and to that point's PCA plane of its 10 nearest kept
+// points (itself included); each kept point's distance to its nearest other
+// kept point.
+struct Point_distances
+{
+  std::vector<double> to_nearest, to_plane, spacing;
+};
+
+inline Point_distances point_distances(const Cloud& input, const std::vector<Point>& kept)
+{
+  const Index_tree tree(kept);
+  const std::size_t m = kept.size();
+  std::vector<Eigen::Vector3d> normal(m), centroid(m);
+  Point_distances d{ std::vector<double>(input.points.size()), std::vector<double>(input.points.size()),
+                     std::vector<double>(m) };
+  tbb::parallel_for(std::size_t(0), m, [&](std::size_t i) {
+    thread_local std::vector<Index> near;
+    tree.nearest(kept[i], 10, near);
+    std::tie(normal[i], centroid[i]) = pca_plane(kept, near);
+    d.spacing[i] = std::sqrt(CGAL::squared_distance(kept[i], kept[near[1]])) / input.diagonal;
+  });
+  tbb::parallel_for(std::size_t(0), input.points.size(), [&](std::size_t i) {
+    thread_local std::vector<Index> near;
+    tree.nearest(input.points[i], 1, near);
+    const Point& p = input.points[i];
+    d.to_nearest[i] = std::sqrt(CGAL::squared_distance(p, kept[near[0]])) / input.diagonal;
+    d.to_plane[i] =
+      std::abs(normal[near[0]].dot(Eigen::Vector3d(p.x(), p.y(), p.z()) - centroid[near[0]])) / input.diagonal;
+  });
+  return d;
+}
+
 inline Quality measure(const Cloud& input, const Selection& kept, bool is_replica,
                        const CGAL::Entropy_simplification::Options& indicator_options)
 {
   Quality q;
-  const Index_tree tree(kept.points);
-
-  // each kept point's plane, from its 10 nearest kept points (itself included)
-  const std::size_t m = kept.points.size();
-  std::vector<Eigen::Vector3d> normal(m), centroid(m);
-  std::vector<double> spacing(m);
-  tbb::parallel_for(std::size_t(0), m, [&](std::size_t i) {
-    thread_local std::vector<Index> near;
-    tree.nearest(kept.points[i], 10, near);
-    std::tie(normal[i], centroid[i]) = pca_plane(kept.points, near);
-    spacing[i] = std::sqrt(CGAL::squared_distance(kept.points[i], kept.points[near[1]]));
-  });
-
-  const std::size_t n = input.points.size();
-  std::vector<double> distance(n), plane_distance(n);
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-    thread_local std::vector<Index> near;
-    tree.nearest(input.points[i], 1, near);
-    const Point& p = input.points[i];
-    distance[i] = std::sqrt(CGAL::squared_distance(p, kept.points[near[0]])) / input.diagonal;
-    plane_distance[i] =
-      std::abs(normal[near[0]].dot(Eigen::Vector3d(p.x(), p.y(), p.z()) - centroid[near[0]])) / input.diagonal;
-  });
+  const std::size_t n = input.points.size(), m = kept.points.size();
+  Point_distances d = point_distances(input, kept.points);
+  std::vector<double>& distance = d.to_nearest;
+  const std::vector<double>& plane_distance = d.to_plane;
 
   double sum = 0., squares = 0.;
   for (std::size_t i = 0; i < n; ++i)
@@ -151,10 +165,10 @@ inline Quality measure(const Cloud& input, const Selection& kept, bool is_replic
   q.max = distance.back();
 
   double s = 0., ss = 0.;
-  for (double d : spacing)
+  for (double x : d.spacing)
   {
-    s += d;
-    ss += d * d;
+    s += x;
+    ss += x * x;
   }
   const double mean_spacing = s / double(m);
   q.uniformity = std::sqrt((std::max)(0., ss / double(m) - mean_spacing * mean_spacing)) / mean_spacing;

@@ -423,12 +423,8 @@ void write_section(std::ostream& md, const std::vector<Cell>& cells)
 
 int main(int argc, char** argv)
 {
-  const std::optional<bench::Section_arguments> arguments = bench::section_arguments(argc, argv, "bench_noise");
-  if (!arguments)
-    return 2;
-  const auto& [data, out, quality, smoke] = *arguments;
-  try
-  {
+  return bench::run_section(argc, argv, "bench_noise", false, [](const bench::Section_arguments& arguments) {
+    const auto& [data, out, quality, smoke] = arguments;
     std::vector<Cell> cells;
     for (const bench::Benchmark_input& in : bench::benchmark_inputs(data, smoke ? 16 : 1))
       if (in.is_scan ? !smoke : in.name.rfind("replica", 0) == 0)
@@ -438,11 +434,5 @@ int main(int argc, char** argv)
       }
     write_csv(out + "/noise.csv", cells);
     write_section(std::cout, cells);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "bench_noise: " << e.what() << '\n';
-    return 1;
-  }
-  return 0;
+  });
 }

@@ -4,8 +4,9 @@
 # figures), then the sections "Coincident points" (bench_duplicates),
 # "Scale" (bench_scale, 100k to 10M points, about 7 to 15 minutes), "Levels of
 # detail" (bench_lod, about 3 minutes), "What each term contributes"
-# (bench_ablation, about 4 minutes) and "Point-to-plane error and noise"
-# (bench_noise, about 5 minutes) of RESULTS.md. With --quick: smaller
+# (bench_ablation, about 4 minutes), "Point-to-plane error and noise"
+# (bench_noise, about 5 minutes) and "Thin walls" (bench_thin_walls, about
+# 15 seconds) of RESULTS.md. With --quick: smaller
 # inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.
@@ -22,7 +23,7 @@ command -v gnuplot >/dev/null || { echo "benchmark/run.sh: gnuplot is missing (a
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DENTROPY_SIMPLIFICATION_BUILD_BENCHMARKS=ON \
   -DENTROPY_SIMPLIFICATION_BUILD_EXAMPLES=ON -DENTROPY_SIMPLIFICATION_BUILD_DOC=OFF >/dev/null
-cmake --build build-benchmark --target run_benchmark bench_quality_baseline bench_duplicates bench_scale bench_lod bench_ablation bench_noise entropy_simplify -j"$(nproc)"
+cmake --build build-benchmark --target run_benchmark bench_quality_baseline bench_duplicates bench_scale bench_lod bench_ablation bench_noise bench_thin_walls entropy_simplify -j"$(nproc)"
 mkdir -p "$out/results"
 rm -f "$out"/results/*.png "$out"/results/points/*.txt
 build-benchmark/benchmark/run_benchmark --data build-benchmark/cgal_data/data --out "$out" $mode
@@ -49,6 +50,10 @@ build-benchmark/benchmark/bench_ablation --data build-benchmark/cgal_data/data -
 # On the noisy inputs, the point-to-plane error against the noise the kept
 # points carry (--smoke with --quick: small replicas, CGAL's peers only).
 build-benchmark/benchmark/bench_noise --data build-benchmark/cgal_data/data --out "$out/results" ${mode:+--smoke} \
+  >> "$out/RESULTS.md"
+# The machined parts' point-to-plane error by the thickness of their walls
+# (--smoke with --quick: a small sample of rotor).
+build-benchmark/benchmark/bench_thin_walls --data build-benchmark/cgal_data/data --out "$out/results" ${mode:+--smoke} \
   >> "$out/RESULTS.md"
 (cd "$out/results" && for script in *.gp; do gnuplot "$script"; done)
 echo "benchmark/run.sh: wrote $out/RESULTS.md"
