@@ -117,6 +117,21 @@ void require_nothing_masked(const py::object& array, const std::string& name, co
     throw std::invalid_argument(name + " is a masked array with masked values: pass " + remedy);
 }
 
+// Throws when `object` is a list or tuple of masked arrays with masked
+// values, such as list(masked_points): NumPy would read it without the
+// masks, the values under them included.
+void require_no_masked_rows(const py::handle& object, const std::string& name)
+{
+  if (!py::isinstance<py::list>(object) && !py::isinstance<py::tuple>(object))
+    return;
+  const py::object ma = py::module_::import("numpy").attr("ma");
+  const py::object masked_array = ma.attr("MaskedArray"), is_masked = ma.attr("is_masked");
+  for (const py::handle row : object)
+    if (py::isinstance(row, masked_array) && is_masked(row).cast<bool>())
+      throw std::invalid_argument(name + " is a list of masked rows with masked values: pass the rows to keep, as "
+                                  "m[~m.mask.any(axis=1)] for m = numpy.ma.array(" + name + ")");
+}
+
 // The points as an array of real numbers, or ValueError where NumPy would
 // convert them silently but lose what they hold (masked values, imaginary
 // parts) or read them as numbers they do not hold (booleans, text, dates,
@@ -127,6 +142,7 @@ py::object real_values(const py::handle& points, const char* name)
   if (!array)
     throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
   require_nothing_masked(*array, name, std::string("the rows to keep, as ") + name + "[~" + name + ".mask.any(axis=1)]");
+  require_no_masked_rows(points, name);
   const py::dtype dtype = py::reinterpret_borrow<py::array>(*array).dtype();
   if (dtype.kind() != 'f' && dtype.kind() != 'i' && dtype.kind() != 'u')
     throw std::invalid_argument(std::string(name) + " must hold real numbers, not values of dtype " +

@@ -125,6 +125,8 @@ def test_options_and_threads(kitten):
     np.testing.assert_array_equal(es.simplify(kitten, count=np.uint64(2 ** 64 - 1)), everything)
     # a masked array with nothing masked is its data
     np.testing.assert_array_equal(es.simplify(np.ma.masked_array(kitten), ratio=0.1), expected)
+    # and a list of masked rows with nothing masked, their values
+    np.testing.assert_array_equal(es.simplify(list(np.ma.masked_array(kitten)), ratio=0.1), expected)
     np.testing.assert_array_equal(es.simplify(kitten, count=np.int64(521), k=np.int32(10)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=1), expected)
     # more threads than the machine runs: as many as it runs (TBB would
@@ -188,6 +190,11 @@ def test_empty_input():
     (lambda p: es.simplify(Reads_as(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), count=10),
      "points is a masked array with masked values"),
     (lambda p: es.report(p, Reads_as(np.ma.masked_array(np.arange(10), mask=np.arange(10) == 9))), "masked values"),
+    # a list of masked rows, which NumPy reads without the masks
+    (lambda p: es.simplify(list(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), count=10),
+     r"points is a list of masked rows with masked values: pass the rows to keep, as m\[~m.mask.any\(axis=1\)\]"),
+    (lambda p: es.report(tuple(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), [0, 1, 2]),
+     "points is a list of masked rows with masked values"),
     # one real number, not an array of them or a complex one
     (lambda p: es.simplify(p, ratio=np.array([0.1])), r"ratio must be a number, got array\(\[0.1\]\)"),
     (lambda p: es.simplify(p, ratio=np.complex64(0.1 + 0.7j)), "ratio must be a number"),
