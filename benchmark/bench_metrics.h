@@ -112,10 +112,11 @@ inline double fitted_plane_rmse(const std::vector<Point>& points)
 // Per point, over the input's diagonal: each input point's distance to its
 // nearest kept point and to that point's PCA plane of its 10 nearest kept
 // points (itself included); each kept point's distance to its nearest other
-// kept point.
+// kept point. And each input point's nearest kept point.
 struct Point_distances
 {
   std::vector<double> to_nearest, to_plane, spacing;
+  std::vector<Index> nearest;
 };
 
 inline Point_distances point_distances(const Cloud& input, const std::vector<Point>& kept)
@@ -124,7 +125,7 @@ inline Point_distances point_distances(const Cloud& input, const std::vector<Poi
   const std::size_t m = kept.size();
   std::vector<Eigen::Vector3d> normal(m), centroid(m);
   Point_distances d{ std::vector<double>(input.points.size()), std::vector<double>(input.points.size()),
-                     std::vector<double>(m) };
+                     std::vector<double>(m), std::vector<Index>(input.points.size()) };
   tbb::parallel_for(std::size_t(0), m, [&](std::size_t i) {
     thread_local std::vector<Index> near;
     tree.nearest(kept[i], 10, near);
@@ -135,6 +136,7 @@ inline Point_distances point_distances(const Cloud& input, const std::vector<Poi
     thread_local std::vector<Index> near;
     tree.nearest(input.points[i], 1, near);
     const Point& p = input.points[i];
+    d.nearest[i] = near[0];
     d.to_nearest[i] = std::sqrt(CGAL::squared_distance(p, kept[near[0]])) / input.diagonal;
     d.to_plane[i] =
       std::abs(normal[near[0]].dot(Eigen::Vector3d(p.x(), p.y(), p.z()) - centroid[near[0]])) / input.diagonal;

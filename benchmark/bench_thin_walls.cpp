@@ -17,14 +17,18 @@
 // Where a wall is a few spacings thick, the 10 nearest kept points of a
 // kept point can reach its other side, and their plane tilts. For each
 // class of thickness: the input's share of points, the kept density there
-// over the input's, and the class's part of the squared error, as a share
+// over the input's, the share of its points whose measuring plane reaches
+// across a wall (through a kept point whose mesh face faces the other way),
+// and the class's part of the squared error, as a share
 // of the run without the entropy term's whole squared error (so that those
 // shares sum to 1 in that run, and to the square of the ratio of the errors
 // in the other).
 // Prints the section "Thin walls" of RESULTS.md and writes every cell to
 // thin_walls.csv. With --smoke: rotor alone, divided in size by 16.
-// Invariants checked (the program fails otherwise): each run keeps exactly
-// its count, and the range it returns is a permutation of the input.
+// Invariants checked (the program fails otherwise): each mesh is closed and
+// oriented outwards; each run keeps exactly its count, and the range it
+// returns is a permutation of the input; the classes' squared errors sum to
+// the whole.
 
 #include "bench_arguments.h"
 #include "bench_common.h"
@@ -35,6 +39,7 @@
 #include <CGAL/Entropy_simplification/entropy_simplify_point_set.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/version.h>
 #if CGAL_VERSION_NR >= 1060000000
 #include <CGAL/AABB_traits_3.h>
@@ -53,6 +58,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
 
 namespace ES = CGAL::Entropy_simplification;
 using bench::Cloud;
@@ -73,15 +82,23 @@ constexpr std::array<double, 2> weights = { 0., 3. };
 constexpr std::array<double, 2> class_bounds = { 2., 4. };
 constexpr std::size_t classes = class_bounds.size() + 1;
 
-// Each point's wall thickness over the diagonal: the distance, against the
-// normal of the face nearest it, to the first face beyond; infinity where
-// the ray leaves the mesh.
-std::vector<double> wall_thickness(const bench::Mesh& mesh, const Cloud& cloud)
+// Each point's wall: the outward normal of the mesh face nearest it, and
+// the wall's thickness over the diagonal, the distance against that normal
+// to the first face beyond (infinity where the ray leaves the mesh). The
+// mesh must be closed and oriented outwards, or "beyond" is not inside.
+struct Walls
 {
+  std::vector<Eigen::Vector3d> normal;
+  std::vector<double> thickness;
+};
+
+Walls walls_of(const bench::Mesh& mesh, const Cloud& cloud)
+{
+  if (!CGAL::is_closed(mesh) || !CGAL::Polygon_mesh_processing::is_outward_oriented(mesh))
+    throw std::runtime_error(cloud.name + ": the mesh is not closed and oriented outwards");
   Face_tree tree(faces(mesh).first, faces(mesh).second, mesh);
   tree.accelerate_distance_queries();
-  std::vector<double> thickness;
-  thickness.reserve(cloud.points.size());
+  Walls walls;
   for (const Point& p : cloud.points)
   {
     const auto nearest = tree.closest_point_and_primitive(p);
@@ -97,9 +114,10 @@ std::vector<double> wall_thickness(const bench::Mesh& mesh, const Cloud& cloud)
 #endif
     if (q != nullptr)
       t = std::sqrt(CGAL::squared_distance(p, *q)) / cloud.diagonal;
-    thickness.push_back(t);
+    walls.normal.emplace_back(n.x(), n.y(), n.z());
+    walls.thickness.push_back(t);
   }
-  return thickness;
+  return walls;
 }
 
 std::size_t class_of(double thickness, double spacing)
@@ -133,7 +151,7 @@ struct Cell
 {
   std::string input;
   double ratio = 0., weight = 0., point_to_plane = 0., spacing = 0.;
-  std::array<double, classes> input_share{}, density{}, error_share{};
+  std::array<double, classes> input_share{}, density{}, across{}, error_share{};
 };
 
 double mean(const std::vector<double>& values)
@@ -144,8 +162,26 @@ double mean(const std::vector<double>& values)
   return sum / double(values.size());
 }
 
+// Whether each kept point's 10 nearest kept points (itself included), the
+// points of its measuring plane, hold one on the other side of its wall:
+// one whose wall faces the other way (outward normals more than 120
+// degrees apart). `origin[j]` is the input point kept point j is.
+std::vector<char> planes_across(const std::vector<Point>& kept, const std::vector<bench::Index>& origin,
+                                const Walls& walls)
+{
+  const bench::Index_tree tree(kept);
+  std::vector<char> across(kept.size(), 0);
+  tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t j) {
+    thread_local std::vector<bench::Index> near;
+    tree.nearest(kept[j], 10, near);
+    for (bench::Index other : near)
+      across[j] |= walls.normal[origin[j]].dot(walls.normal[origin[other]]) < -0.5;
+  });
+  return across;
+}
+
 // The two runs of one ratio, classified by the spacing of the first.
-std::vector<Cell> measure_ratio(const Cloud& cloud, const std::vector<double>& thickness, double ratio)
+std::vector<Cell> measure_ratio(const Cloud& cloud, const Walls& walls, double ratio)
 {
   const std::size_t n = cloud.points.size(), m = std::size_t(std::ceil(ratio * double(n)));
   const bench::Index_tree input_tree(cloud.points);
@@ -155,34 +191,46 @@ std::vector<Cell> measure_ratio(const Cloud& cloud, const std::vector<double>& t
   {
     const std::vector<Point> kept = default_mode(cloud, m, weight);
     const bench::Point_distances d = bench::point_distances(cloud, kept);
+    std::vector<bench::Index> origin(m);
+    tbb::parallel_for(std::size_t(0), m, [&](std::size_t j) {
+      thread_local std::vector<bench::Index> nearest;
+      input_tree.nearest(kept[j], 1, nearest);
+      origin[j] = nearest[0];
+    });
+    const std::vector<char> across = planes_across(kept, origin, walls);
     Cell cell{ cloud.name, ratio, weight };
     if (cells.empty())
       spacing = mean(d.spacing);
     cell.spacing = spacing;
-    std::array<double, classes> squares{}, input_count{}, kept_count{};
+    std::array<double, classes> squares{}, input_count{}, kept_count{}, across_count{};
     double all_squares = 0.;
     for (std::size_t i = 0; i < n; ++i)
     {
-      const std::size_t c = class_of(thickness[i], spacing);
+      const std::size_t c = class_of(walls.thickness[i], spacing);
       squares[c] += d.to_plane[i] * d.to_plane[i];
       input_count[c] += 1.;
+      across_count[c] += across[d.nearest[i]];
       all_squares += d.to_plane[i] * d.to_plane[i];
     }
-    for (const Point& p : kept)
-    {
-      thread_local std::vector<bench::Index> nearest;
-      input_tree.nearest(p, 1, nearest);
-      kept_count[class_of(thickness[nearest[0]], spacing)] += 1.;
-    }
+    for (bench::Index i : origin)
+      kept_count[class_of(walls.thickness[i], spacing)] += 1.;
     if (cells.empty())
       first_squares = all_squares;
     cell.point_to_plane = std::sqrt(all_squares / double(n));
+    const double undefined = std::numeric_limits<double>::quiet_NaN();
+    double shares = 0.;
     for (std::size_t c = 0; c < classes; ++c)
     {
       cell.input_share[c] = input_count[c] / double(n);
-      cell.density[c] = input_count[c] > 0. ? (kept_count[c] / double(m)) / cell.input_share[c] : 0.;
+      cell.density[c] = input_count[c] > 0. ? (kept_count[c] / double(m)) / cell.input_share[c] : undefined;
+      cell.across[c] = input_count[c] > 0. ? across_count[c] / input_count[c] : undefined;
       cell.error_share[c] = squares[c] / first_squares;
+      shares += cell.error_share[c];
     }
+    // the shares sum to the square of the ratio of the errors
+    const double expected = all_squares / first_squares;
+    if (!(std::abs(shares - expected) <= 1e-9 * expected))
+      throw std::logic_error(cloud.name + ": the classes' squared errors do not sum to the whole");
     cells.push_back(cell);
   }
   return cells;
@@ -193,13 +241,14 @@ void write_csv(const std::string& file, const std::vector<Cell>& cells)
   std::ofstream out(file);
   out << "input,ratio,feature_weight,point_to_plane,spacing";
   for (const char* c : { "below_2", "2_to_4", "from_4" })
-    out << ",input_share_" << c << ",density_" << c << ",error_share_" << c;
+    out << ",input_share_" << c << ",density_" << c << ",across_" << c << ",error_share_" << c;
   out << '\n' << std::setprecision(9);
   for (const Cell& cell : cells)
   {
     out << cell.input << ',' << cell.ratio << ',' << cell.weight << ',' << cell.point_to_plane << ',' << cell.spacing;
     for (std::size_t c = 0; c < classes; ++c)
-      out << ',' << cell.input_share[c] << ',' << cell.density[c] << ',' << cell.error_share[c];
+      out << ',' << cell.input_share[c] << ',' << cell.density[c] << ',' << cell.across[c] << ','
+          << cell.error_share[c];
     out << '\n';
   }
   if (!out.flush())
@@ -209,8 +258,9 @@ void write_csv(const std::string& file, const std::vector<Cell>& cells)
 const std::array<const char*, classes> class_names = { "below 2 spacings", "2 to 4 spacings", "4 spacings and more" };
 
 // Where the entropy term raises the error: the class of walls whose squared
-// error rose most, its part of the rise, and its density with and without
-// the term; where it lowers it, the range of the ratios.
+// error rose most, its part of the rise, its density and its share of
+// measuring planes across a wall with and without the term; elsewhere, the
+// range of the ratios.
 void write_summary(std::ostream& out, const std::vector<Cell>& cells)
 {
   std::vector<std::string> raised;
@@ -219,7 +269,7 @@ void write_summary(std::ostream& out, const std::vector<Cell>& cells)
   {
     const Cell &off = cells[r], &on = cells[r + 1];
     const double ratio = on.point_to_plane / off.point_to_plane;
-    if (ratio <= 1.)
+    if (!(ratio > 1.))
     {
       lowest = (std::min)(lowest, ratio);
       highest = (std::max)(highest, ratio);
@@ -238,15 +288,22 @@ void write_summary(std::ostream& out, const std::vector<Cell>& cells)
                      bench::fixed(100. * on.input_share[most], 0) + "% of the points, take " +
                      bench::fixed(100. * (on.error_share[most] - off.error_share[most]) / rise, 0) +
                      "% of the rise in squared error, their kept density " + bench::fixed(on.density[most], 3) +
-                     " times the input's, against " + bench::fixed(off.density[most], 3) + ")");
+                     " times the input's against " + bench::fixed(off.density[most], 3) + ", the planes of " +
+                     bench::fixed(100. * on.across[most], 0) + "% of their points across the wall against " +
+                     bench::fixed(100. * off.across[most], 0) + "%)");
   }
   const std::size_t pairs = cells.size() / weights.size();
+  if (raised.empty())
+  {
+    out << "\nThe entropy term raises the point-to-plane error in none of the " << pairs << " cells ("
+        << bench::fixed(lowest, 3) << " to " << bench::fixed(highest, 3) << " times).\n";
+    return;
+  }
   out << "\nThe entropy term raises the point-to-plane error in " << raised.size() << " of " << pairs << " cells";
   for (std::size_t i = 0; i < raised.size(); ++i)
     out << (i == 0 ? ": " : "; ") << raised[i];
   if (raised.size() < pairs)
-    out << (raised.empty() ? "" : "; it lowers it in the others") << " (" << bench::fixed(lowest, 3) << " to "
-        << bench::fixed(highest, 3) << " times)";
+    out << "; not in the others (" << bench::fixed(lowest, 3) << " to " << bench::fixed(highest, 3) << " times)";
   out << ".\n";
 }
 
@@ -259,18 +316,21 @@ void write_section(std::ostream& out, const std::vector<Cell>& cells)
          "mesh samples, the point-to-plane error (as in the quality tables, over the diagonal) split by the "
          "thickness of the wall each input point lies on: the distance from the point, against the normal of "
          "the mesh face nearest it, to the mesh's other side, in kept spacings (the mean distance from a kept "
-         "point to its nearest, in the run at weight 0). Each class: the input's share of points, the kept "
-         "density there over the input's, and the class's part of the squared error as a share of the run at "
-         "weight 0's whole (summing to 1 at weight 0, to the square of the ratio of the errors at 3).\n\n"
-      << "| input | kept | weight | point-to-plane | below 2 spacings: points, density, error | 2 to 4 | 4 and "
-         "more (or no other side) |\n|---|---:|---:|---:|---|---|---|\n";
+         "point to its nearest, in the run at weight 0). Each class: the input's share of points; the kept "
+         "density there over the input's; the share of its points whose measuring plane (that of their nearest "
+         "kept point's 10 nearest kept points) reaches across a wall, through a kept point whose mesh face "
+         "faces the other way (normals more than 120 degrees apart); and the class's part of the squared error "
+         "as a share of the run at weight 0's whole (summing to 1 at weight 0, to the square of the ratio of "
+         "the errors at 3). n/a: no point in the class.\n\n"
+      << "| input | kept | weight | point-to-plane | below 2 spacings: points, density, across, error | 2 to 4 | "
+         "4 and more (or no other side) |\n|---|---:|---:|---:|---|---|---|\n";
   for (const Cell& cell : cells)
   {
     out << "| " << cell.input << " | " << bench::fixed(100. * cell.ratio, 0) << "% | " << bench::fixed(cell.weight, 0) << " | "
         << std::setprecision(4) << cell.point_to_plane;
     for (std::size_t c = 0; c < classes; ++c)
       out << " | " << bench::fixed(cell.input_share[c], 3) << ", " << bench::fixed(cell.density[c], 3) << ", "
-          << bench::fixed(cell.error_share[c], 3);
+          << bench::fixed(cell.across[c], 3) << ", " << bench::fixed(cell.error_share[c], 3);
     out << " |\n";
   }
   write_summary(out, cells);
@@ -290,11 +350,10 @@ int main(int argc, char** argv)
         Cloud cloud = in.make();
         const std::string mesh = data + "/meshes/" + cloud.name + ".off";
         cloud.name += bench::role_mark(in.role);
-        const std::vector<double> thickness =
-          wall_thickness(bench::read_mesh(mesh), cloud);
+        const Walls walls = walls_of(bench::read_mesh(mesh), cloud);
         for (double ratio : ratios)
         {
-          const std::vector<Cell> c = measure_ratio(cloud, thickness, ratio);
+          const std::vector<Cell> c = measure_ratio(cloud, walls, ratio);
           cells.insert(cells.end(), c.begin(), c.end());
         }
       }

@@ -6,7 +6,7 @@
 # detail" (bench_lod, about 3 minutes), "What each term contributes"
 # (bench_ablation, about 4 minutes), "Point-to-plane error and noise"
 # (bench_noise, about 5 minutes) and "Thin walls" (bench_thin_walls, about
-# 15 seconds) of RESULTS.md. With --quick: smaller
+# 20 seconds) of RESULTS.md. With --quick: smaller
 # inputs, a couple of minutes,
 # written to build-benchmark/quick/ so that the committed results stay as they
 # are.

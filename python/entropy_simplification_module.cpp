@@ -117,14 +117,16 @@ void require_nothing_masked(const py::object& array, const std::string& name, co
     throw std::invalid_argument(name + " is a masked array with masked values: pass " + remedy);
 }
 
-// Throws when `object` is a list or tuple of masked arrays with masked
-// values, such as list(masked_points): NumPy would read it without the
-// masks, the values under them included.
+// Throws when `object` is a sequence (a list, a tuple, a deque...) of
+// masked arrays with masked values, such as list(masked_points): NumPy would
+// read it without the masks, the values under them included. An array is a
+// sequence of its rows, but its masks are its own (require_nothing_masked).
 void require_no_masked_rows(const py::handle& object, const std::string& name)
 {
-  if (!py::isinstance<py::list>(object) && !py::isinstance<py::tuple>(object))
+  const py::object numpy = py::module_::import("numpy"), ma = numpy.attr("ma");
+  if (!py::isinstance<py::sequence>(object) || py::isinstance(object, numpy.attr("ndarray")) ||
+      py::isinstance<py::str>(object) || py::isinstance<py::bytes>(object))
     return;
-  const py::object ma = py::module_::import("numpy").attr("ma");
   const py::object masked_array = ma.attr("MaskedArray"), is_masked = ma.attr("is_masked");
   for (const py::handle row : object)
     if (py::isinstance(row, masked_array) && is_masked(row).cast<bool>())

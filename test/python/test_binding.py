@@ -5,6 +5,7 @@ and the Open3D example. Run by CTest, which sets PYTHONPATH to the module,
 ES_PROGRAM to the program, ES_DATA_DIR to CGAL's demo data and ES_EXAMPLES_DIR
 to examples/python."""
 
+import collections
 import os
 import re
 import signal
@@ -194,6 +195,8 @@ def test_empty_input():
     (lambda p: es.simplify(list(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), count=10),
      r"points is a list of masked rows with masked values: pass the rows to keep, as m\[~m.mask.any\(axis=1\)\]"),
     (lambda p: es.report(tuple(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7)), [0, 1, 2]),
+     "points is a list of masked rows with masked values"),
+    (lambda p: es.importance(collections.deque(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7))),
      "points is a list of masked rows with masked values"),
     # one real number, not an array of them or a complex one
     (lambda p: es.simplify(p, ratio=np.array([0.1])), r"ratio must be a number, got array\(\[0.1\]\)"),
