@@ -144,7 +144,9 @@ py::object real_values(const py::handle& points, const char* name)
   if (!array)
     throw std::invalid_argument(std::string(name) + " must be an (n, 3) array of numbers");
   require_nothing_masked(*array, name, std::string("the rows to keep, as ") + name + "[~" + name + ".mask.any(axis=1)]");
-  require_no_masked_rows(points, name);
+  // rows only: a sequence of masked blocks gets the error of its shape
+  if (py::reinterpret_borrow<py::array>(*array).ndim() == 2)
+    require_no_masked_rows(points, name);
   const py::dtype dtype = py::reinterpret_borrow<py::array>(*array).dtype();
   if (dtype.kind() != 'f' && dtype.kind() != 'i' && dtype.kind() != 'u')
     throw std::invalid_argument(std::string(name) + " must hold real numbers, not values of dtype " +

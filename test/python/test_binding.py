@@ -198,6 +198,9 @@ def test_empty_input():
      "points is a list of masked rows with masked values"),
     (lambda p: es.importance(collections.deque(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7))),
      "points is a list of masked rows with masked values"),
+    # a list of masked blocks of rows: its shape is what is wrong
+    (lambda p: es.simplify(list(np.ma.masked_array(p, mask=np.arange(p.size).reshape(p.shape) == 7).reshape(-1, 1, 3)),
+                           count=10), r"points must be an \(n, 3\) array"),
     # one real number, not an array of them or a complex one
     (lambda p: es.simplify(p, ratio=np.array([0.1])), r"ratio must be a number, got array\(\[0.1\]\)"),
     (lambda p: es.simplify(p, ratio=np.complex64(0.1 + 0.7j)), "ratio must be a number"),
