@@ -187,7 +187,8 @@ std::map<std::pair<std::string, double>, Peer_figures> read_peers(const std::str
   return peers;
 }
 
-const char* const role_names[] = { "tuned", "held out", "held out anew" };
+const char* const role_names[] = { "tuned", "held out", "held out anew", "held out for the next term" };
+constexpr int roles = 4;
 
 // The geometric mean over a group's cells of a variant's metric over the
 // whole mode's.
@@ -224,12 +225,12 @@ int cells_in_group(const std::vector<Cell>& cells, Input_role role)
 void write_chart(const std::vector<Cell>& cells, const std::vector<Variant>& v, const std::string& dir)
 {
   std::ofstream data(dir + "/ablation.dat");
-  data << "# term, then (ratio - 1) in % for each measure: tuned, held out, held out anew\n";
+  data << "# term, then (ratio - 1) in % for each measure: tuned, held out, held out anew, held out for the next term\n";
   for (std::size_t i = 1; i < v.size(); ++i)
   {
     data << '"' << v[i].term << '"';
     for (Metric metric : metrics)
-      for (int role = 0; role < 3; ++role)
+      for (int role = 0; role < roles; ++role)
       {
         const double ratio = geometric_ratio(cells, i, Input_role(role), metric);
         data << ' ' << (ratio > 0. ? bench::fixed(100. * (ratio - 1.), 2) : std::string("NaN"));
@@ -248,10 +249,10 @@ void write_chart(const std::vector<Cell>& cells, const std::vector<Variant>& v, 
   {
     gp << "set title '" << metric_names[m] << "'\nplot ";
     bool first = true;
-    for (int role = 0; role < 3; ++role)
+    for (int role = 0; role < roles; ++role)
       if (cells_in_group(cells, Input_role(role)) > 0)
       {
-        gp << (first ? "'ablation.dat'" : ", ''") << " using " << 2 + 3 * m + role << (first ? ":xtic(1)" : "")
+        gp << (first ? "'ablation.dat'" : ", ''") << " using " << 2 + roles * m + role << (first ? ":xtic(1)" : "")
            << " title '" << role_names[role] << "'";
         first = false;
       }
@@ -277,7 +278,7 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
         "program checks, in every cell, the count and that the kept points are distinct input points; with every "
         "term, it keeps what `entropy_simplify_point_set` keeps. Below 1 is better than the whole mode.\n\n"
      << "### Ratios to the whole mode\n\nGeometric mean over the cells of each group (tuned / held out / held out "
-        "anew) of the run without the term over the whole mode, drawn in `results/chart_ablation.png`.\n\n"
+        "anew / held out for the next term) of the run without the term over the whole mode, drawn in `results/chart_ablation.png`.\n\n"
         "![ablation](results/chart_ablation.png)\n\n"
      << "| term switched off | mean distance | point-to-plane error | Hausdorff distance |\n|---|---|---|---|\n";
   for (std::size_t i = 1; i < v.size(); ++i)
@@ -286,7 +287,7 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
     for (auto metric : metrics)
     {
       md << ' ';
-      for (int role = 0; role < 3; ++role)
+      for (int role = 0; role < roles; ++role)
       {
         const double ratio = geometric_ratio(cells, i, Input_role(role), metric);
         md << (role ? " / " : "") << (ratio > 0. ? bench::fixed(ratio, 3) : "-");
@@ -299,8 +300,9 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
   if (peers.empty())
     md << "Not counted: the smoke run's inputs are not those of `quality.csv`.\n";
   else
-    md << "Cells (tuned / held out / held out anew; " << cells_in_group(cells, Input_role::tuned) << " / "
-       << cells_in_group(cells, Input_role::held_out) << " / " << cells_in_group(cells, Input_role::held_out_anew)
+    md << "Cells (tuned / held out / held out anew / held out for the next term; "
+       << cells_in_group(cells, Input_role::tuned) << " / " << cells_in_group(cells, Input_role::held_out) << " / "
+       << cells_in_group(cells, Input_role::held_out_anew) << " / " << cells_in_group(cells, Input_role::held_out_next)
        << " in all) where the run keeps a mean distance at most " << bench::fixed(bench::ahead_mean, 1)
        << " times the best library peer's, a point-to-plane error at most "
        << bench::fixed(bench::ahead_point_to_plane, 1) << " times the best peer's, a Hausdorff distance at most "
@@ -309,7 +311,7 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
           "point-to-plane error | Hausdorff distance |\n|---|---|---|---|\n";
   for (std::size_t i = 0; i < v.size() && !peers.empty(); ++i)
   {
-    int met[3][3] = {};
+    int met[3][roles] = {};
     for (const Cell& c : cells)
       if (c.variant == i)
       {
@@ -321,7 +323,12 @@ void write_section(const std::vector<Cell>& cells, const std::vector<Variant>& v
       }
     md << "| " << v[i].term << " |";
     for (auto& metric : met)
-      md << ' ' << metric[0] << " / " << metric[1] << " / " << metric[2] << " |";
+    {
+      md << ' ';
+      for (int role = 0; role < roles; ++role)
+        md << (role ? " / " : "") << metric[role];
+      md << " |";
+    }
     md << "\n";
   }
   md << "\n### Labelled shares\n\nThe share of kept points near fandisk's sharp edges, and on the replicas' ball, "

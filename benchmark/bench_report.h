@@ -261,11 +261,11 @@ inline void write_charts(const Report& r, const std::string& dir)
     { "uniformity", "coefficient of variation of the spacing of the result", 6, false },
     { "mean_entropy", "mean entropy of the paper (Eq. 7), bits", 7, false },
   };
-  std::ofstream gp(dir + "/charts.gp");
-  gp << "set terminal pngcairo noenhanced size 1800,1100 font 'sans,10'\n"
-     << "set logscale x\nset xlabel 'points kept (%)'\nset grid\nunset key\n";
-  // the key takes the panel after the inputs
+  // the key takes the panel after the inputs; each row of panels keeps its height
   const int columns = 3, rows = int(inputs.size() + columns) / columns;
+  std::ofstream gp(dir + "/charts.gp");
+  gp << "set terminal pngcairo noenhanced size 1800," << 60 + 210 * rows << " font 'sans,10'\n"
+     << "set logscale x\nset xlabel 'points kept (%)'\nset grid\nunset key\n";
   for (const Metric& metric : metrics)
   {
     gp << "set output 'chart_" << metric.file << ".png'\n"

@@ -93,7 +93,7 @@ inline void ahead_group(std::ostream& md, const Report& r, const std::vector<con
   md << ".\n\n";
 }
 
-// The section, tuned, held-out and held-out-anew inputs apart.
+// The section, the inputs of each role apart.
 inline void write_targets_ahead(std::ostream& md, const Report& r)
 {
   const Inputs_by_role groups = inputs_by_role(r);
@@ -111,6 +111,7 @@ inline void write_targets_ahead(std::ostream& md, const Report& r)
   ahead_group(md, r, groups.tuned, "### Inputs the mode was tuned on\n\n");
   ahead_group(md, r, groups.held_out, "### Held-out inputs\n\n");
   ahead_group(md, r, groups.held_out_anew, "### Inputs held out anew\n\n");
+  ahead_group(md, r, groups.held_out_next, "### Inputs held out for the next term\n\n");
 }
 
 } // namespace bench

@@ -299,8 +299,10 @@ int main(int argc, char** argv)
       plan.timed_ratios = { 10. };
     plan.role = input.role;
     // the feature weight sweep runs on every tuned input and on the
-    // labelled machined parts held out anew
-    plan.feature_sweep = input.role == Input_role::tuned || (input.role == Input_role::held_out_anew && input.labelled);
+    // labelled machined parts held out anew or for the next term
+    plan.feature_sweep = input.role == Input_role::tuned ||
+                         (input.labelled && (input.role == Input_role::held_out_anew ||
+                                             input.role == Input_role::held_out_next));
     plans.push_back(plan);
   }
   plans.push_back({ [&] { return mesh_sample("timing_1M", data + "/meshes/lion.off", 1000000 / scale, false); },
