@@ -10,9 +10,9 @@ set bmargin 15
 set key outside bottom center horizontal
 set ylabel 'without the term / with it - 1 (%)'
 set title 'mean distance'
-plot 'ablation.dat' using 2:xtic(1) title 'tuned', '' using 3 title 'held out', '' using 4 title 'held out anew'
+plot 'ablation.dat' using 2:xtic(1) title 'tuned', '' using 3 title 'held out', '' using 4 title 'held out anew', '' using 5 title 'held out for the next term'
 set title 'point-to-plane error'
-plot 'ablation.dat' using 5:xtic(1) title 'tuned', '' using 6 title 'held out', '' using 7 title 'held out anew'
+plot 'ablation.dat' using 6:xtic(1) title 'tuned', '' using 7 title 'held out', '' using 8 title 'held out anew', '' using 9 title 'held out for the next term'
 set title 'Hausdorff distance'
-plot 'ablation.dat' using 8:xtic(1) title 'tuned', '' using 9 title 'held out', '' using 10 title 'held out anew'
+plot 'ablation.dat' using 10:xtic(1) title 'tuned', '' using 11 title 'held out', '' using 12 title 'held out anew', '' using 13 title 'held out for the next term'
 unset multiplot

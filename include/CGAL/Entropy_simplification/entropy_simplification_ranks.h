@@ -131,11 +131,12 @@ std::size_t exact_level(std::size_t n, const NamedParameters& np)
    points change; the user manual gives the figures); at 0.5% and 0.1%, where the kept
    points stand for the input points, the mean distance is up to 1.049 and
    1.064 times. With a level, the prefixes longer than `L` are not
-   relocated, and are up to 1.089 times worse. The whole order costs 1.30
-   to 1.36 times a direct call to 1% of the points without a level, and
-   1.03 to 1.09 times with the level at 1% (medians on 100,000 and
+   relocated, and are up to 1.089 times worse. The whole order costs 1.29
+   to 1.34 times a direct call to 1% of the points without a level, and
+   1.03 to 1.12 times with the level at 1% (medians on 100,000 and
    1,000,000 points, with one thread and with two, in the benchmark's last
-   run, on a shared machine whose runs vary by several hundredths).
+   run, on a shared machine whose runs vary by several hundredths: 1.03 to
+   1.09 with the level in the run before).
 
    Coincident points are ranked last: their first copy in input order takes
    part in the run, and the other copies take the last ranks, the earliest
