@@ -181,10 +181,11 @@ std::vector<char> planes_across(const std::vector<Point>& kept, const std::vecto
 }
 
 // The two runs of one ratio, classified by the spacing of the first.
-std::vector<Cell> measure_ratio(const Cloud& cloud, const Walls& walls, double ratio)
+// `input_tree` holds the cloud's points.
+std::vector<Cell> measure_ratio(const Cloud& cloud, const bench::Index_tree& input_tree, const Walls& walls,
+                                double ratio)
 {
   const std::size_t n = cloud.points.size(), m = std::size_t(std::ceil(ratio * double(n)));
-  const bench::Index_tree input_tree(cloud.points);
   std::vector<Cell> cells;
   double spacing = 0., first_squares = 0.;
   for (double weight : weights)
@@ -354,9 +355,10 @@ int main(int argc, char** argv)
         const std::string mesh = data + "/meshes/" + cloud.name + ".off";
         cloud.name += bench::role_mark(in.role);
         const Walls walls = walls_of(bench::read_mesh(mesh), cloud);
+        const bench::Index_tree input_tree(cloud.points);
         for (double ratio : ratios)
         {
-          const std::vector<Cell> c = measure_ratio(cloud, walls, ratio);
+          const std::vector<Cell> c = measure_ratio(cloud, input_tree, walls, ratio);
           cells.insert(cells.end(), c.begin(), c.end());
         }
       }
