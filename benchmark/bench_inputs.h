@@ -200,6 +200,13 @@ struct Benchmark_input
   std::function<Cloud()> make;
 };
 
+// Whether a diagnosis, which a term may be designed from, may read the
+// input: not those held out for that term.
+inline bool open_to_diagnosis(const Benchmark_input& input)
+{
+  return input.role != Input_role::held_out_next;
+}
+
 // The inputs of the quality tables, in their order: those the default mode
 // was tuned on, those held out, those held out anew, those held out for the
 // next term. The replicas and the

@@ -426,10 +426,8 @@ int main(int argc, char** argv)
   return bench::run_section(argc, argv, "bench_noise", false, [](const bench::Section_arguments& arguments) {
     const auto& [data, out, quality, smoke] = arguments;
     std::vector<Cell> cells;
-    // a diagnosis that a term may be designed from: it leaves the inputs held
-    // out for that term unread
     for (const bench::Benchmark_input& in : bench::benchmark_inputs(data, smoke ? 16 : 1))
-      if (in.role != bench::Input_role::held_out_next && (in.is_scan ? !smoke : in.name.rfind("replica", 0) == 0))
+      if (bench::open_to_diagnosis(in) && (in.is_scan ? !smoke : in.name.rfind("replica", 0) == 0))
       {
         const std::vector<Cell> c = measure_input(in, smoke, std::cerr);
         cells.insert(cells.end(), c.begin(), c.end());

@@ -344,11 +344,9 @@ int main(int argc, char** argv)
   return bench::run_section(argc, argv, "bench_thin_walls", false, [](const bench::Section_arguments& arguments) {
     const auto& [data, out, quality, smoke] = arguments;
     std::vector<Cell> cells;
-    // a diagnosis that a term may be designed from: it leaves the inputs held
-    // out for that term unread
     for (const bench::Benchmark_input& in : bench::benchmark_inputs(data, smoke ? 16 : 1))
-      if (!in.is_scan && in.labelled && in.name.rfind("replica", 0) != 0 && (!smoke || in.name == "rotor") &&
-          in.role != bench::Input_role::held_out_next)
+      if (bench::open_to_diagnosis(in) && !in.is_scan && in.labelled && in.name.rfind("replica", 0) != 0 &&
+          (!smoke || in.name == "rotor"))
       {
         std::cerr << "bench_thin_walls: " << in.name << '\n';
         Cloud cloud = in.make();
