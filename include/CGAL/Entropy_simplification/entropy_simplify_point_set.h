@@ -121,7 +121,7 @@ inline void check_simplification_arguments(std::size_t n, std::size_t distinct, 
    others sum least among the four nearest the cell's centroid, unless that
    would take a cell's farthest member farther than the members nearest the
    centroids keep any. Flat regions thin evenly, without holes; the user
-   manual gives the reasoning and the measurements.
+   manual and its design notes give the reasoning and the measurements.
 
    <b>`Mode::paper`, the paper's method,</b> with `N(p)` taken among the
    points still present:

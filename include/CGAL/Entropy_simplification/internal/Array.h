@@ -38,7 +38,7 @@ inline bool& touches_pages_in_parallel()
 // not used it recently: a direct call on 1,000,000 points with 2 threads took
 // 2.9 to 3.1 s in a new process and 2.6 to 2.7 s when run again, as one
 // thread first wrote most of its memory, copying the points and zeroing the
-// arrays that the parallel stages then fill (see the manual).
+// arrays that the parallel stages then fill (see the design notes).
 inline void touch_pages(void* storage, std::size_t bytes)
 {
 #ifdef CGAL_LINKED_WITH_TBB

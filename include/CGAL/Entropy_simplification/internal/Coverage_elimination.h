@@ -56,7 +56,7 @@ inline bool most_points_present(std::size_t present, std::size_t n)
 // Open3D's farthest point sampling. So the exponent is 1.1 while more than
 // 35% of the points are present, 1.35 while more than 20%, and 1.6 below,
 // a little above 3/2, which gives fandisk's sharp edges at 10% the share
-// issue 12 asks for (manual: the greedy coverage elimination). It depends
+// issue 12 asks for (design notes: the default mode). It depends
 // on the points present, not on the count asked for, so that a ranking's
 // prefixes follow the same weights as direct calls.
 inline double coverage_weight_exponent(std::size_t present, std::size_t n)
@@ -81,7 +81,7 @@ inline double coverage_weight_exponent(std::size_t present, std::size_t n)
 // for two or three input points and the density grows about as the square
 // of the weight, so that weak features, a noisy scan's or the coarse
 // scale's wide bands, took points from the flat regions that the mean
-// distance misses most (manual: the square of the strength).
+// distance misses most (design notes: the square of the strength).
 template <typename ConcurrencyTag>
 Array<double> coverage_weights(const Elimination_field& field, double exponent, bool squared_strength)
 {
@@ -608,7 +608,7 @@ private:
   // Lloyd's, as a direct call's relocation takes two, which brought the
   // prefixes' mean distance at 1 to 50% from up to 1.056 times a direct
   // call's to up to 1.044 on the benchmark's inputs, in about 8% of the
-  // whole order's time (manual: levels of detail). Below 1%, the
+  // whole order's time (design notes: levels of detail). Below 1%, the
   // representatives alone know their nearest.
   template <typename ConcurrencyTag>
   Array<Index> remove_level(std::size_t boundary, std::size_t target)

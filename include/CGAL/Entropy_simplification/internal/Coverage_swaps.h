@@ -35,7 +35,7 @@ inline std::size_t three_per_hundred(std::size_t kept) { return (3 * kept + 99) 
 // distance, the narrower ones weigh on the mean distance; each swap closes
 // one, and takes a point from the most crowded (see crowding). Three per
 // hundred everywhere against one (benchmark run at 4ddaf34, see the
-// manual): the mean-distance target of issue 12 met in two more cells
+// design notes): the mean-distance target of issue 12 met in two more cells
 // (lion at 20%, anchor at 10%), fandisk's edge shares 2.233 / 2.196 / 1.584
 // instead of 2.264 / 2.232 / 1.606 at 10 / 20 / 50%, the last below its
 // target of 1.6.
@@ -269,7 +269,7 @@ private:
 // lists in CSR form, which hold the level above alone and are symmetric).
 // The elimination built the lists; the swaps then build no tree, which at
 // every boundary cost the whole order 1.6 to 1.7 times a direct call (see
-// the manual). A point with no present neighbour is at an infinite distance.
+// the design notes). A point with no present neighbour is at an infinite distance.
 // Each point's present point is one of its neighbours, as it is searched
 // there; the lists being symmetric, a cell's members are then among its
 // present point's neighbours, and need no lists of their own.

@@ -94,7 +94,7 @@ constexpr std::size_t coarse_stride = 64;
 // whose ball issue 12 asks to keep at least 1.6 times the input's share at
 // 10%: with the weights of coverage_weight_exponent, 0.7 keeps 1.63 there
 // and brings its mean distance at 10% within the best peer's (0.998 times
-// it), which three quarters did not (1.001; manual: the coarse scale).
+// it), which three quarters did not (1.001; design notes: the coarse scale).
 constexpr double coarse_strength_share = 0.7;
 
 // A bijection of 32-bit integers that scrambles their order, by which each
@@ -118,8 +118,8 @@ inline std::uint32_t scrambled(std::uint32_t x)
 // weight is lowered so that the sum of `weight * strength` over the area
 // stays below it, that is, where more than 15% of the area, counted by
 // strength, is marked. On noisy scans, where a third of the area has high
-// entropy, an unbounded weight thins everything else (measured in the user
-// manual).
+// entropy, an unbounded weight thins everything else (measured in the design
+// notes).
 constexpr double feature_budget_at_default_weight = 0.45;
 
 inline double budgeted_feature_weight(double feature_weight, double feature_area, double total_area)

@@ -51,7 +51,7 @@ struct Elimination_stage
 // (+2.5%, +11%) and Hausdorff distance (+5%, +44%) than with the eighth
 // power, which such stages keep; the likely cause, untested, is that the
 // nearest neighbours then tell best which point is redundant, and the
-// square weighs them less (see the manual).
+// square weighs them less (see the design notes).
 inline bool keeps_most_points(std::size_t stage_target, std::size_t n)
 {
   return std::uint64_t(100) * stage_target > std::uint64_t(55) * n;
@@ -93,7 +93,7 @@ inline std::int64_t rounded(double x)
 // neighbours more, which on the tuned inputs of the benchmark lowered the
 // Hausdorff distance by 3.3% and the point-to-plane error by 1.5% on
 // geometric average at 10, 20 and 50% kept, the mean distance unchanged
-// (exponents 1 to 12 measured; see the manual).
+// (exponents 1 to 12 measured; see the design notes).
 inline std::int64_t pair_weight(const Working_point& a, const Working_point& b, double scale_a, double scale_b,
                                 const Elimination_stage& stage)
 {
