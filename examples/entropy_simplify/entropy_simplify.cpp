@@ -149,7 +149,10 @@ int run(int argc, char** argv)
 {
   const std::optional<Settings> settings = parse_command_line(argc, argv);
   if (!settings)
+  {
+    flush_standard_output("");
     return exit_done;
+  }
   const Settings& s = *settings;
   const Thread_limit thread_limit(s.threads);
   const Format in = format_of(s.input), out = format_of(s.output);
@@ -219,12 +222,16 @@ int run(int argc, char** argv)
     std::printf("entropy_simplify: kept %zu of %zu points (%.4g%%) in %.3g s, peak memory %.0f MiB; wrote %s\n",
                 kept.size(), cloud.size(), 100. * double(kept.size()) / double(cloud.size()), timer.time(),
                 peak_memory_mib(), targets.c_str());
+  const std::string files_written =
+    "; " + targets + (s.indices.empty() && s.render.empty() ? " is" : " are") + " written";
+  flush_standard_output(files_written);
   // measured once the output is safe, so that it never delays the file
   if (s.report && s.lod)
     print_prefix_reports(prefix_reports<CGAL::Parallel_if_available_tag>(
       cloud, selection.by_rank, level_asked ? std::optional<std::size_t>(kept.size()) : std::nullopt));
   else if (s.report)
     print_quality_report(quality_of<CGAL::Parallel_if_available_tag>(cloud, kept));
+  flush_standard_output(files_written);
   return exit_done;
 }
 
@@ -235,6 +242,7 @@ int main(int argc, char** argv)
 {
   using namespace entropy_simplify;
   keep_standard_descriptors_taken();
+  buffer_standard_output();
   try
   {
     return run(argc, argv);

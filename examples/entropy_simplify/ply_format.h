@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace entropy_simplify {
@@ -120,20 +121,22 @@ inline Ply_encoding parse_format(const std::vector<std::string_view>& tokens, co
   return Ply_encoding(name - std::begin(names));
 }
 
-inline Element parse_element(const std::vector<std::string_view>& tokens, const Header& header,
+// `names`: those of the elements declared before, which a header of many
+// elements looks up in constant time, not by a pass over them.
+inline Element parse_element(const std::vector<std::string_view>& tokens, std::unordered_set<std::string>& names,
                              const Text_reader& reader, std::string_view line)
 {
   Element element;
   if (tokens.size() != 3 || !parse_count(tokens[2], element.count))
     throw_header_error(reader, line, "an element line is 'element NAME COUNT', COUNT a non-negative integer");
   element.name = std::string(tokens[1]);
-  for (const Element& other : header.elements)
-    if (other.name == element.name)
-      throw_header_error(reader, line, "element '" + element.name + "' is declared twice");
+  if (!names.insert(element.name).second)
+    throw_header_error(reader, line, "element '" + element.name + "' is declared twice");
   return element;
 }
 
-inline Property parse_property(const std::vector<std::string_view>& tokens, const Element& element,
+// `names`: those of the element's properties declared before (see parse_element).
+inline Property parse_property(const std::vector<std::string_view>& tokens, std::unordered_set<std::string>& names,
                                const Text_reader& reader, std::string_view line)
 {
   Property property;
@@ -146,9 +149,8 @@ inline Property parse_property(const std::vector<std::string_view>& tokens, cons
   if (!is_integral(property.count_type))
     throw_header_error(reader, line, "a list's length must be of an integer type");
   property.name = std::string(tokens.back());
-  for (const Property& other : element.properties)
-    if (other.name == property.name)
-      throw_header_error(reader, line, "property '" + property.name + "' is declared twice");
+  if (!names.insert(property.name).second)
+    throw_header_error(reader, line, "property '" + property.name + "' is declared twice");
   return property;
 }
 
@@ -168,6 +170,7 @@ inline Header read_header(Text_reader& reader)
     throw Read_error("not a PLY file: it does not start with a 'ply' line");
   Header header;
   bool has_format = false;
+  std::unordered_set<std::string> element_names, property_names; // the last element's
   while (reader.next_line(line))
   {
     line = without_carriage_returns(line);
@@ -181,9 +184,12 @@ inline Header read_header(Text_reader& reader)
       has_format = true;
     }
     else if (keyword == "element")
-      header.elements.push_back(parse_element(tokens, header, reader, line));
+    {
+      header.elements.push_back(parse_element(tokens, element_names, reader, line));
+      property_names.clear();
+    }
     else if (keyword == "property" && !header.elements.empty())
-      header.elements.back().properties.push_back(parse_property(tokens, header.elements.back(), reader, line));
+      header.elements.back().properties.push_back(parse_property(tokens, property_names, reader, line));
     else if (keyword == "end_header" && tokens.size() == 1)
     {
       if (!has_format)

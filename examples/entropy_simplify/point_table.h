@@ -4,12 +4,13 @@
 #ifndef ENTROPY_SIMPLIFY_POINT_TABLE_H
 #define ENTROPY_SIMPLIFY_POINT_TABLE_H
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace entropy_simplify {
@@ -74,26 +75,39 @@ struct Column
   std::vector<double> values;
 };
 
+// Columns are added by `column` alone, which keeps them indexed by name, so
+// that a file of many properties is read in time linear in their number.
 struct Point_table
 {
   std::vector<Column> columns;
+
+  Point_table() = default;
+  // The table of `given`, in that order, a column per name.
+  explicit Point_table(std::vector<Column> given)
+  {
+    for (Column& c : given)
+      column(c.name, c.type).values = std::move(c.values);
+  }
 
   std::size_t size() const { return columns.empty() ? 0 : columns.front().values.size(); }
 
   const Column* find(std::string_view name) const
   {
-    const auto it = std::find_if(columns.begin(), columns.end(), [&](const Column& c) { return c.name == name; });
-    return it == columns.end() ? nullptr : &*it;
+    const auto it = position.find(std::string(name));
+    return it == position.end() ? nullptr : &columns[it->second];
   }
 
   // The column `name`, added last (empty, of `type`) when there is none.
   Column& column(std::string_view name, Scalar_type type)
   {
-    if (const Column* found = find(name))
-      return const_cast<Column&>(*found);
-    columns.push_back(Column{ std::string(name), type, {} });
-    return columns.back();
+    const auto [it, added] = position.emplace(std::string(name), columns.size());
+    if (added)
+      columns.push_back(Column{ std::string(name), type, {} });
+    return columns[it->second];
   }
+
+private:
+  std::unordered_map<std::string, std::size_t> position; // of each column in `columns`
 };
 
 // The rows of `table` listed in `rows`, in that order.

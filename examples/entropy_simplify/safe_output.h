@@ -25,6 +25,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
@@ -444,6 +445,30 @@ inline void commit_together(std::initializer_list<Safe_output*> files)
 }
 
 inline void Safe_output::commit() { commit_together({ this }); }
+
+// Holds what the program prints on the standard output (a few kilobytes at
+// most: the summary, a report, the help) until flush_standard_output writes
+// it, so that a failed write comes with its reason. Call it before printing.
+inline void buffer_standard_output()
+{
+  static char buffer[1 << 16]; // glibc sizes a buffer it allocates itself by the device, 4 KiB
+  std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
+}
+
+// Throws when what the program printed on the standard output (its summary,
+// a report asked for, the help) did not all reach it: a report lost to a
+// full disk or a closed pipe is a failure, as GNU's tools make it, and
+// SIGPIPE, ignored, does not stop the run. `done`: what the message adds
+// about the files.
+inline void flush_standard_output(const std::string& done)
+{
+  errno = 0;
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+    return;
+  const int error = errno;
+  throw std::runtime_error("cannot write to the standard output" +
+                           (error != 0 ? ": " + safe_output_detail::reason(error) : std::string()) + done);
+}
 
 } // namespace entropy_simplify
 

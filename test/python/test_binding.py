@@ -104,8 +104,9 @@ def test_paper_mode_prefixes_are_direct_calls(kitten):
 
 def test_any_layout_and_float32(kitten):
     expected = es.simplify(kitten, count=400)
+    # a memoryview is a sequence too, but of numbers: no rows to check
     for view in (np.asfortranarray(kitten), np.ascontiguousarray(kitten.T).T,
-                 np.hstack([kitten, kitten])[:, :3], kitten.tolist()):
+                 np.hstack([kitten, kitten])[:, :3], kitten.tolist(), memoryview(np.ascontiguousarray(kitten))):
         np.testing.assert_array_equal(es.simplify(view, count=400), expected)
     single = kitten.astype(np.float32)
     np.testing.assert_array_equal(es.simplify(single, count=400), es.simplify(single.astype(np.float64), count=400))
@@ -126,8 +127,11 @@ def test_options_and_threads(kitten):
     np.testing.assert_array_equal(es.simplify(kitten, count=np.uint64(2 ** 64 - 1)), everything)
     # a masked array with nothing masked is its data
     np.testing.assert_array_equal(es.simplify(np.ma.masked_array(kitten), ratio=0.1), expected)
-    # and a list of masked rows with nothing masked, their values
+    # and a list of masked rows with nothing masked, their values, whether
+    # their masks are none or arrays of False
     np.testing.assert_array_equal(es.simplify(list(np.ma.masked_array(kitten)), ratio=0.1), expected)
+    unmasked = np.ma.masked_array(kitten, mask=np.zeros(kitten.shape, bool))
+    np.testing.assert_array_equal(es.simplify(list(unmasked), ratio=0.1), expected)
     np.testing.assert_array_equal(es.simplify(kitten, count=np.int64(521), k=np.int32(10)), expected)
     np.testing.assert_array_equal(es.simplify(kitten, ratio=0.1, threads=1), expected)
     # more threads than the machine runs: as many as it runs (TBB would
